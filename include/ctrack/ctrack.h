@@ -1,0 +1,246 @@
+/*
+ * ctrack: multi-target pedestrian tracking.
+ *
+ * The stable C ABI. Plain C99, only <stdint.h> and <stddef.h>.
+ *
+ * Rules that hold for every function here:
+ *  - Each returns a ct_status (0 on success, a negative code otherwise) unless
+ *    it says otherwise. After a failure, ct_tracker_last_error() explains it.
+ *  - The library keeps no pointer into caller memory after a call returns.
+ *  - There is no mutable global state: different trackers may be used from
+ *    different threads at the same time; one tracker is used by one thread at
+ *    a time.
+ *  - Structs that the caller fills start with a size field. Fill them with
+ *    their *_default() function first; the library reads only what the
+ *    caller's size covers and uses defaults for the rest, so a program built
+ *    against an older header keeps working with a newer library.
+ *
+ * See docs/API.md for the full reference.
+ */
+#ifndef CTRACK_CTRACK_H
+#define CTRACK_CTRACK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The version, in one place: meson.build reads it from here. */
+#define CT_VERSION_MAJOR 0
+#define CT_VERSION_MINOR 1
+#define CT_VERSION_PATCH 0
+/* The ABI major: it is the shared library's SONAME number and moves only
+ * when the ABI breaks. */
+#define CT_ABI_VERSION 1
+
+#define CT_VERSION_NUMBER \
+    ((CT_VERSION_MAJOR << 16) | (CT_VERSION_MINOR << 8) | CT_VERSION_PATCH)
+
+#if defined(_WIN32) || defined(__CYGWIN__)
+#  if defined(CT_BUILDING_LIBRARY)
+#    define CT_API __declspec(dllexport)
+#  else
+#    define CT_API
+#  endif
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#  define CT_API __attribute__((visibility("default")))
+#else
+#  define CT_API
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* Status codes. The values are pinned: they never change. */
+
+typedef enum ct_status {
+    CT_OK = 0,
+    CT_ERROR_INVALID_ARGUMENT = -1, /* a NULL pointer, a bad size, a bad value */
+    CT_ERROR_OUT_OF_MEMORY = -2,
+    CT_ERROR_UNSUPPORTED = -3,      /* a pixel format or mode this build lacks */
+    CT_ERROR_BUFFER_TOO_SMALL = -4, /* the count needed was reported */
+    CT_ERROR_BAD_STATE = -5,        /* e.g. a timestamp that does not increase */
+    CT_ERROR_INTERNAL = -6          /* a bug in ctrack: please report it */
+} ct_status;
+
+/* A static English description of a status; never NULL. */
+CT_API const char *ct_status_str(int status);
+
+/* ------------------------------------------------------------------------ */
+/* Version. */
+
+/* "MAJOR.MINOR.PATCH" of the library that is loaded. */
+CT_API const char *ct_version_string(void);
+/* (MAJOR << 16) | (MINOR << 8) | PATCH of the library that is loaded. */
+CT_API uint32_t ct_version_number(void);
+/* The ABI major of the library that is loaded (CT_ABI_VERSION when built). */
+CT_API uint32_t ct_abi_version(void);
+
+/* ------------------------------------------------------------------------ */
+/* Configuration. */
+
+/* Where the tracker's candidates come from. */
+typedef enum ct_source {
+    /* The host's detections given to ct_tracker_feed(). A feed with n == 0
+     * means "the detector ran and found nobody". The default. */
+    CT_SOURCE_DETECTIONS = 0,
+    /* The pixels (background model and contour template). Not in this
+     * version: ct_tracker_create() answers CT_ERROR_UNSUPPORTED. */
+    CT_SOURCE_PIXELS = 1
+} ct_source;
+
+typedef struct ct_config {
+    /* sizeof(ct_config) as the caller's header knows it. */
+    size_t size;
+    /* A ct_source value. */
+    int32_t source;
+    /* Detections scoring at least this are matched first and may start a
+     * track; in [0, 1]. */
+    float high_score;
+    /* Detections scoring below this are ignored; those between low_score and
+     * high_score only continue existing confirmed tracks (second pass). */
+    float low_score;
+    /* Minimum IoU between a track's predicted box and a high-score detection
+     * for them to be matched; in (0, 1]. */
+    float match_iou;
+    /* Minimum IoU for the low-score second pass; in (0, 1]. */
+    float low_match_iou;
+    /* Minimum IoU for a tentative track to be matched; in (0, 1]. */
+    float tentative_match_iou;
+    /* Consecutive matched steps that confirm a new track (>= 1). */
+    int32_t min_hits;
+    /* Seconds a confirmed track that lost its detections is kept, predicted
+     * by its motion model, before it is removed. */
+    double lost_lifetime;
+    /* Seconds during which a lost track is still reported by
+     * ct_tracker_get_tracks() (its box predicted); 0 reports only tracks
+     * that a detection updated this step. At most lost_lifetime. */
+    double report_lost_time;
+    /* Motion model: standard deviation of the acceleration of the box centre
+     * and size, in box heights per second squared. */
+    float motion_noise;
+    /* Standard deviation of a detection's position error, in box heights. */
+    float detection_noise;
+    /* Non-zero: reported boxes are clipped to the image when its size is
+     * known (a frame with width and height). */
+    int32_t clip_boxes;
+    /* Upper bound on live tracks (tentative, confirmed and lost); when it is
+     * reached, new detections do not start tracks. */
+    int32_t max_tracks;
+} ct_config;
+
+/* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
+ * defaults and sets cfg->size. */
+CT_API int ct_config_default(ct_config *cfg, size_t size);
+
+/* Checks a configuration without creating a tracker. On failure, writes a
+ * message naming the wrong field and why into msg (if msg_len > 0; always
+ * NUL-terminated) and returns CT_ERROR_INVALID_ARGUMENT or
+ * CT_ERROR_UNSUPPORTED. */
+CT_API int ct_config_check(const ct_config *cfg, char *msg, size_t msg_len);
+
+/* ------------------------------------------------------------------------ */
+/* Frames. */
+
+#define CT_FOURCC(a, b, c, d) \
+    ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
+
+typedef enum ct_format {
+    CT_FORMAT_NONE = 0,                         /* no pixels this step */
+    CT_FORMAT_I420 = 0x30323449,                /* 'I420': Y, U, V planes */
+    CT_FORMAT_NV12 = 0x3231564E,                /* 'NV12': Y, interleaved UV */
+    CT_FORMAT_GRAY8 = 0x30303859                /* 'Y800': Y only */
+} ct_format;
+
+typedef struct ct_frame {
+    /* sizeof(ct_frame) as the caller's header knows it. */
+    size_t size;
+    /* A ct_format value. */
+    uint32_t format;
+    /* Image size in pixels. With CT_FORMAT_NONE both may be 0 (unknown);
+     * when given, boxes can be clipped to it. */
+    int32_t width;
+    int32_t height;
+    /* Plane pointers and strides in bytes (strides > 0). I420: Y, U, V with
+     * chroma planes of (width+1)/2 x (height+1)/2. NV12: Y, UV. GRAY8: Y. */
+    const uint8_t *planes[3];
+    int32_t strides[3];
+    /* Capture time in microseconds; must increase from one feed to the
+     * next. Motion is predicted from it, so dropped frames and variable
+     * frame rates are handled. */
+    int64_t timestamp_us;
+} ct_frame;
+
+/* Fills *frame with an empty CT_FORMAT_NONE frame and sets frame->size. */
+CT_API int ct_frame_default(ct_frame *frame, size_t size);
+
+/* ------------------------------------------------------------------------ */
+/* Detections in, tracks out. */
+
+typedef struct ct_detection {
+    float left, top, width, height; /* pixels, top-left origin */
+    float score;                    /* detector confidence, usually [0, 1] */
+    int32_t class_id;               /* the host's class; carried, not used */
+} ct_detection;
+
+typedef enum ct_track_state {
+    CT_TRACK_TENTATIVE = 0, /* not yet confirmed; never reported */
+    CT_TRACK_CONFIRMED = 1, /* updated by a detection this step */
+    CT_TRACK_LOST = 2       /* no detection this step; box predicted */
+} ct_track_state;
+
+typedef struct ct_track {
+    uint64_t id;                    /* > 0, never reused by a tracker */
+    float left, top, width, height; /* pixels */
+    float barycenter_x, barycenter_y;
+    float velocity_x, velocity_y;   /* of the box centre, pixels per second */
+    float confidence;               /* [0, 1] */
+    int32_t state;                  /* a ct_track_state value */
+    int32_t age;                    /* steps since the track started */
+    int32_t hits;                   /* steps in which a detection updated it */
+    double time_since_update;       /* seconds since a detection updated it */
+    int32_t detection_index;        /* index of this step's input detection
+                                       that updated it, -1 if none */
+    int32_t class_id;               /* class of the last matched detection */
+} ct_track;
+
+/* ------------------------------------------------------------------------ */
+/* The tracker. */
+
+typedef struct ct_tracker ct_tracker;
+
+/* Creates a tracker. On failure *out is NULL and, when the configuration is
+ * at fault, ct_config_check() on it says why. */
+CT_API int ct_tracker_create(const ct_config *cfg, ct_tracker **out);
+
+/* Destroys a tracker; NULL is accepted and ignored. */
+CT_API void ct_tracker_destroy(ct_tracker *tracker);
+
+/* Runs one step. `frame` gives the timestamp and, unless its format is
+ * CT_FORMAT_NONE, the pixels. `dets` holds `n` detections (NULL when n is
+ * 0). A failed call changes nothing in the tracker. */
+CT_API int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
+                           const ct_detection *dets, size_t n);
+
+/* Copies the tracks reported for the last step into out[0..count-1].
+ * `elem_size` is sizeof(ct_track) as the caller knows it. When capacity is
+ * too small, nothing is copied, *count is set to the number needed and
+ * CT_ERROR_BUFFER_TOO_SMALL is returned; out may be NULL when capacity is
+ * 0. Tracks are in increasing id order. */
+CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
+                                 size_t capacity, size_t elem_size,
+                                 size_t *count);
+
+/* Forgets every track and the last timestamp; ids keep increasing. */
+CT_API int ct_tracker_reset(ct_tracker *tracker);
+
+/* The message of the last failed call on this tracker ("" if none). The
+ * string is owned by the tracker and valid until its next call. Accepts
+ * NULL. */
+CT_API const char *ct_tracker_last_error(const ct_tracker *tracker);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CTRACK_CTRACK_H */

@@ -1,0 +1,203 @@
+// The C ABI: every public function. Each checks its arguments, then runs the
+// engine inside a catch-all, so no C++ exception ever crosses into C.
+#include "ctrack/ctrack.h"
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <new>
+
+#include "config.h"
+#include "error.h"
+#include "frame.h"
+#include "tracker.h"
+
+#define CT_STR2(x) #x
+#define CT_STR(x) CT_STR2(x)
+
+struct ct_tracker {
+    explicit ct_tracker(const ct_config &cfg) : engine(cfg) {}
+    ctrack::Engine engine;
+    // The message of the last failed call. A fixed buffer: reporting an
+    // error never allocates.
+    mutable char error[512] = {0};
+};
+
+namespace {
+
+// Runs f, turning any exception into a status and a message.
+template <typename F>
+int guarded(const ct_tracker *t, F &&f)
+{
+    char *msg = t ? t->error : nullptr;
+    size_t len = t ? sizeof t->error : 0;
+    try {
+        return f();
+    } catch (const std::bad_alloc &) {
+        return ctrack::fail(msg, len, CT_ERROR_OUT_OF_MEMORY, "out of memory");
+    } catch (const std::exception &e) {
+        return ctrack::fail(msg, len, CT_ERROR_INTERNAL, "internal error: %s", e.what());
+    } catch (...) {
+        return ctrack::fail(msg, len, CT_ERROR_INTERNAL, "internal error: unknown exception");
+    }
+}
+
+void clear_error(const ct_tracker *t)
+{
+    t->error[0] = '\0';
+}
+
+} // namespace
+
+extern "C" {
+
+const char *ct_status_str(int status)
+{
+    switch (status) {
+    case CT_OK: return "success";
+    case CT_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case CT_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case CT_ERROR_UNSUPPORTED: return "unsupported";
+    case CT_ERROR_BUFFER_TOO_SMALL: return "buffer too small";
+    case CT_ERROR_BAD_STATE: return "bad state";
+    case CT_ERROR_INTERNAL: return "internal error";
+    default: return "unknown status";
+    }
+}
+
+const char *ct_version_string(void)
+{
+    return CT_STR(CT_VERSION_MAJOR) "." CT_STR(CT_VERSION_MINOR) "." CT_STR(CT_VERSION_PATCH);
+}
+
+uint32_t ct_version_number(void)
+{
+    return CT_VERSION_NUMBER;
+}
+
+uint32_t ct_abi_version(void)
+{
+    return CT_ABI_VERSION;
+}
+
+int ct_config_default(ct_config *cfg, size_t size)
+{
+    if (!cfg || size < sizeof(size_t))
+        return CT_ERROR_INVALID_ARGUMENT;
+    ct_config d = ctrack::default_config();
+    std::memset(static_cast<void *>(cfg), 0, size);
+    std::memcpy(static_cast<void *>(cfg), &d, size < sizeof d ? size : sizeof d);
+    cfg->size = size;
+    return CT_OK;
+}
+
+int ct_config_check(const ct_config *cfg, char *msg, size_t msg_len)
+{
+    return ctrack::load_config(cfg, nullptr, msg, msg_len);
+}
+
+int ct_frame_default(ct_frame *frame, size_t size)
+{
+    if (!frame || size < sizeof(size_t))
+        return CT_ERROR_INVALID_ARGUMENT;
+    ct_frame d = ctrack::default_frame();
+    std::memset(static_cast<void *>(frame), 0, size);
+    std::memcpy(static_cast<void *>(frame), &d, size < sizeof d ? size : sizeof d);
+    frame->size = size;
+    return CT_OK;
+}
+
+int ct_tracker_create(const ct_config *cfg, ct_tracker **out)
+{
+    if (!out)
+        return CT_ERROR_INVALID_ARGUMENT;
+    *out = nullptr;
+    ct_config c;
+    int st = ctrack::load_config(cfg, &c, nullptr, 0);
+    if (st != CT_OK)
+        return st;
+    return guarded(nullptr, [&] {
+        *out = new ct_tracker(c);
+        return CT_OK;
+    });
+}
+
+void ct_tracker_destroy(ct_tracker *tracker)
+{
+    delete tracker;
+}
+
+int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
+                    const ct_detection *dets, size_t n)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    char *msg = tracker->error;
+    const size_t len = sizeof tracker->error;
+    ct_frame f;
+    int st = ctrack::load_frame(frame, &f, msg, len);
+    if (st != CT_OK)
+        return st;
+    st = ctrack::check_detections(dets, n, msg, len);
+    if (st != CT_OK)
+        return st;
+    ctrack::Engine &e = tracker->engine;
+    if (e.has_time() && f.timestamp_us <= e.last_time())
+        return ctrack::fail(msg, len, CT_ERROR_BAD_STATE,
+                            "frame.timestamp_us: %lld does not increase (the last was %lld)",
+                            (long long)f.timestamp_us, (long long)e.last_time());
+    return guarded(tracker, [&] {
+        e.reserve(n);
+        e.step(f.timestamp_us, ctrack::ImageSize{f.width, f.height}, dets, n);
+        return CT_OK;
+    });
+}
+
+int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
+                          size_t elem_size, size_t *count)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    char *msg = tracker->error;
+    const size_t len = sizeof tracker->error;
+    if (!count)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
+    *count = 0;
+    if (elem_size < sizeof(ct_track) || elem_size > (1u << 16))
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "elem_size: %zu is not sizeof(ct_track) (%zu, or more from a "
+                            "newer header)",
+                            elem_size, sizeof(ct_track));
+    if (capacity > 0 && !out)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "out: NULL with capacity %zu", capacity);
+    const auto &tracks = tracker->engine.reported();
+    *count = tracks.size();
+    if (capacity < tracks.size())
+        return ctrack::fail(msg, len, CT_ERROR_BUFFER_TOO_SMALL,
+                            "capacity: %zu tracks, %zu needed", capacity, tracks.size());
+    unsigned char *dst = reinterpret_cast<unsigned char *>(out);
+    for (size_t i = 0; i < tracks.size(); i++, dst += elem_size) {
+        std::memset(dst, 0, elem_size);
+        std::memcpy(dst, &tracks[i], sizeof(ct_track));
+    }
+    return CT_OK;
+}
+
+int ct_tracker_reset(ct_tracker *tracker)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    tracker->engine.reset();
+    return CT_OK;
+}
+
+const char *ct_tracker_last_error(const ct_tracker *tracker)
+{
+    return tracker ? tracker->error : "";
+}
+
+} // extern "C"

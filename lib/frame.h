@@ -1,0 +1,27 @@
+// Frame validation: a frame is checked whole before the tracker uses it.
+#ifndef CTRACK_FRAME_H
+#define CTRACK_FRAME_H
+
+#include <cstddef>
+
+#include "ctrack/ctrack.h"
+
+namespace ctrack {
+
+constexpr size_t kFrameSizeV1 = sizeof(ct_frame);
+// Largest accepted image side: beyond it a size is taken for garbage.
+constexpr int kMaxSide = 16384;
+
+ct_frame default_frame();
+
+// Reads the caller's frame and checks its format, size, planes and strides.
+// The timestamp's order is the tracker's business. On failure writes a
+// message into msg and returns a status.
+int load_frame(const ct_frame *in, ct_frame *out, char *msg, size_t msg_len);
+
+// Checks n detections: finite boxes of positive size, finite scores.
+int check_detections(const ct_detection *dets, size_t n, char *msg, size_t msg_len);
+
+} // namespace ctrack
+
+#endif

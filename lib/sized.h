@@ -1,0 +1,37 @@
+// Reading a caller's size-prefixed struct that may be older or newer than
+// the library's.
+#ifndef CTRACK_SIZED_H
+#define CTRACK_SIZED_H
+
+#include <cstddef>
+#include <cstring>
+
+namespace ctrack {
+
+enum class SizedResult { ok, too_small, unknown_fields };
+
+// Copies the `caller_size` bytes the caller's struct has over `out` (which
+// holds the defaults). A caller's struct smaller than `min_size` (the first
+// published version) is refused; a larger one, from a newer header, is
+// accepted only if the fields this library does not know are all zero, that
+// is, left at their defaults.
+template <typename T>
+SizedResult read_sized(const T *in, size_t caller_size, size_t min_size, T *out)
+{
+    if (caller_size < min_size)
+        return SizedResult::too_small;
+    if (caller_size > sizeof(T)) {
+        const unsigned char *extra = reinterpret_cast<const unsigned char *>(in) + sizeof(T);
+        for (size_t i = 0; i < caller_size - sizeof(T); i++)
+            if (extra[i] != 0)
+                return SizedResult::unknown_fields;
+        caller_size = sizeof(T);
+    }
+    std::memcpy(static_cast<void *>(out), in, caller_size);
+    out->size = sizeof(T);
+    return SizedResult::ok;
+}
+
+} // namespace ctrack
+
+#endif

@@ -1,0 +1,275 @@
+#include "tracker.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ctrack {
+
+namespace {
+
+// A walking person covers about one body height per second: the prior
+// uncertainty of a new track's velocity, in box heights per second.
+constexpr double kInitialSpeedSd = 1.0;
+// Box sizes change more slowly than positions: their acceleration noise is
+// this fraction of the centre's.
+constexpr double kSizeNoiseRatio = 0.5;
+constexpr double kMinSide = 1.0;
+
+} // namespace
+
+double iou(const Box &a, const Box &b)
+{
+    double x0 = std::max(a.left, b.left), y0 = std::max(a.top, b.top);
+    double x1 = std::min(a.left + a.width, b.left + b.width);
+    double y1 = std::min(a.top + a.height, b.top + b.height);
+    if (x1 <= x0 || y1 <= y0)
+        return 0;
+    double inter = (x1 - x0) * (y1 - y0);
+    double uni = a.width * a.height + b.width * b.height - inter;
+    return uni > 0 ? inter / uni : 0;
+}
+
+Box Track::box() const
+{
+    double bw = std::max(w.x, kMinSide), bh = std::max(h.x, kMinSide);
+    return Box{cx.x - bw / 2, cy.x - bh / 2, bw, bh};
+}
+
+static Box det_box(const ct_detection &d)
+{
+    return Box{d.left, d.top, d.width, d.height};
+}
+
+Engine::Engine(const ct_config &cfg) : cfg_(cfg) {}
+
+void Engine::reserve(size_t n)
+{
+    size_t tracks = tracks_.size() + n;
+    tracks_.reserve(tracks);
+    reported_.reserve(tracks);
+    cost_.reserve(tracks * n);
+    row_to_col_.reserve(tracks);
+    pool_tracks_.reserve(tracks);
+    pool_dets_.reserve(n);
+    low_dets_.reserve(n);
+    det_used_.reserve(n);
+}
+
+void Engine::reset()
+{
+    tracks_.clear();
+    reported_.clear();
+    has_time_ = false;
+    last_us_ = 0;
+}
+
+void Engine::predict(double dt)
+{
+    for (Track &t : tracks_) {
+        double hgt = std::max(t.h.x, kMinSide);
+        double accel = cfg_.motion_noise * hgt;
+        t.cx.predict(dt, accel);
+        t.cy.predict(dt, accel);
+        t.w.predict(dt, accel * kSizeNoiseRatio);
+        t.h.predict(dt, accel * kSizeNoiseRatio);
+        t.age++;
+        t.det_index = -1;
+    }
+}
+
+void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
+{
+    double sd = cfg_.detection_noise * std::max<double>(d.height, kMinSide);
+    t.cx.update(d.left + d.width / 2.0, sd);
+    t.cy.update(d.top + d.height / 2.0, sd);
+    t.w.update(d.width, sd);
+    t.h.update(d.height, sd);
+    t.hits++;
+    t.last_update_us = t_us;
+    t.det_index = index;
+    t.class_id = d.class_id;
+    t.score = d.score;
+    if (t.state == CT_TRACK_LOST)
+        t.state = CT_TRACK_CONFIRMED;
+    else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits) {
+        t.state = CT_TRACK_CONFIRMED;
+        t.id = next_id_++;
+    }
+}
+
+void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool confirm)
+{
+    Track t;
+    double sd = cfg_.detection_noise * std::max<double>(d.height, kMinSide);
+    double vsd = kInitialSpeedSd * std::max<double>(d.height, kMinSide);
+    t.cx.init(d.left + d.width / 2.0, sd, vsd);
+    t.cy.init(d.top + d.height / 2.0, sd, vsd);
+    t.w.init(d.width, sd, vsd * kSizeNoiseRatio);
+    t.h.init(d.height, sd, vsd * kSizeNoiseRatio);
+    t.age = 1;
+    t.hits = 1;
+    t.last_update_us = t_us;
+    t.det_index = index;
+    t.class_id = d.class_id;
+    t.score = d.score;
+    if (confirm || t.hits >= cfg_.min_hits) {
+        t.state = CT_TRACK_CONFIRMED;
+        t.id = next_id_++;
+    }
+    tracks_.push_back(t);
+}
+
+// Matches tracks_[track_idx] to dets[det_idx] by IoU with the gate min_iou,
+// updates the matched tracks, and leaves only the unmatched in both lists.
+void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+                   const ct_detection *dets, double min_iou)
+{
+    const int n = (int)track_idx.size(), m = (int)det_idx.size();
+    if (n == 0 || m == 0)
+        return;
+    cost_.resize((size_t)n * m);
+    for (int i = 0; i < n; i++) {
+        Box tb = tracks_[track_idx[i]].box();
+        for (int j = 0; j < m; j++)
+            cost_[(size_t)i * m + j] = 1.0 - iou(tb, det_box(dets[det_idx[j]]));
+    }
+    // A pair is allowed when 1 - IoU < 1 - min_iou; the tiny slack lets an
+    // IoU exactly at the gate through.
+    assigner_.solve(cost_.data(), n, m, 1.0 - min_iou + 1e-12, row_to_col_);
+    for (int i = 0; i < n; i++) {
+        int j = row_to_col_[i];
+        if (j < 0)
+            continue;
+        det_used_[det_idx[j]] = 1;
+        update(tracks_[track_idx[i]], dets[det_idx[j]], det_idx[j], last_us_);
+        track_idx[i] = -1;
+    }
+    track_idx.erase(std::remove(track_idx.begin(), track_idx.end(), -1), track_idx.end());
+    det_idx.erase(std::remove_if(det_idx.begin(), det_idx.end(),
+                                 [this](int d) { return det_used_[d] != 0; }),
+                  det_idx.end());
+}
+
+void Engine::step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n)
+{
+    const bool first = !has_time_;
+    const double dt = first ? 0.0 : (double)(t_us - last_us_) * 1e-6;
+    last_us_ = t_us;
+    has_time_ = true;
+
+    predict(dt);
+
+    det_used_.assign(n, 0);
+    pool_dets_.clear();
+    low_dets_.clear();
+    for (size_t j = 0; j < n; j++) {
+        if (dets[j].score >= cfg_.high_score)
+            pool_dets_.push_back((int)j);
+        else if (dets[j].score >= cfg_.low_score)
+            low_dets_.push_back((int)j);
+    }
+
+    // 1. High-score detections against confirmed and lost tracks.
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state != CT_TRACK_TENTATIVE)
+            pool_tracks_.push_back((int)i);
+    match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
+
+    // 2. Low-score detections continue tracks that were confirmed and not
+    //    yet lost: a weak detection near where a person is expected.
+    {
+        size_t k = 0;
+        for (int i : pool_tracks_)
+            if (tracks_[i].state == CT_TRACK_CONFIRMED)
+                pool_tracks_[k++] = i;
+        pool_tracks_.resize(k);
+    }
+    match(pool_tracks_, low_dets_, dets, cfg_.low_match_iou);
+
+    // 3. Tentative tracks against the high-score detections left.
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state == CT_TRACK_TENTATIVE)
+            pool_tracks_.push_back((int)i);
+    match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
+
+    // Lifecycle of the tracks no detection updated.
+    size_t k = 0;
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        bool keep = true;
+        if (t.last_update_us != t_us) {
+            if (t.state == CT_TRACK_TENTATIVE) {
+                keep = false;
+            } else {
+                t.state = CT_TRACK_LOST;
+                double since = (double)(t_us - t.last_update_us) * 1e-6;
+                Box b = t.box();
+                bool outside = image.known() &&
+                    (b.left >= image.width || b.top >= image.height ||
+                     b.left + b.width <= 0 || b.top + b.height <= 0);
+                keep = since <= cfg_.lost_lifetime && !outside;
+            }
+        }
+        if (keep)
+            tracks_[k++] = t;
+    }
+    tracks_.resize(k);
+
+    // New tracks from the high-score detections nobody claimed. The first
+    // step confirms them at once: there is no earlier frame to wait for.
+    for (int j : pool_dets_) {
+        if ((int)tracks_.size() >= cfg_.max_tracks)
+            break;
+        start_track(dets[j], j, t_us, first);
+    }
+
+    report(t_us, image);
+}
+
+void Engine::report(int64_t t_us, ImageSize image)
+{
+    reported_.clear();
+    for (const Track &t : tracks_) {
+        if (t.state == CT_TRACK_TENTATIVE)
+            continue;
+        double since = (double)(t_us - t.last_update_us) * 1e-6;
+        if (t.state == CT_TRACK_LOST && since > cfg_.report_lost_time)
+            continue;
+        Box b = t.box();
+        if (cfg_.clip_boxes && image.known()) {
+            double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
+            double x1 = std::min<double>(image.width, b.left + b.width);
+            double y1 = std::min<double>(image.height, b.top + b.height);
+            if (x1 <= x0 || y1 <= y0)
+                continue;
+            b = Box{x0, y0, x1 - x0, y1 - y0};
+        }
+        ct_track o = {};
+        o.id = t.id;
+        o.left = (float)b.left;
+        o.top = (float)b.top;
+        o.width = (float)b.width;
+        o.height = (float)b.height;
+        o.barycenter_x = (float)(b.left + b.width / 2);
+        o.barycenter_y = (float)(b.top + b.height / 2);
+        o.velocity_x = (float)t.cx.v;
+        o.velocity_y = (float)t.cy.v;
+        double conf = std::min(1.0, std::max(0.0, (double)t.score));
+        if (t.state == CT_TRACK_LOST && cfg_.lost_lifetime > 0)
+            conf *= std::max(0.0, 1.0 - since / cfg_.lost_lifetime);
+        o.confidence = (float)conf;
+        o.state = t.state;
+        o.age = t.age;
+        o.hits = t.hits;
+        o.time_since_update = since;
+        o.detection_index = t.det_index;
+        o.class_id = t.class_id;
+        reported_.push_back(o);
+    }
+    std::sort(reported_.begin(), reported_.end(),
+              [](const ct_track &a, const ct_track &b) { return a.id < b.id; });
+}
+
+} // namespace ctrack

@@ -1,0 +1,79 @@
+// The tracking engine: prediction, association and track lifecycles.
+#ifndef CTRACK_TRACKER_H
+#define CTRACK_TRACKER_H
+
+#include <cstdint>
+#include <vector>
+
+#include "ctrack/ctrack.h"
+#include "assign.h"
+#include "motion.h"
+
+namespace ctrack {
+
+struct Box {
+    double left, top, width, height;
+};
+
+double iou(const Box &a, const Box &b);
+
+struct Track {
+    uint64_t id = 0;              // 0 until confirmed
+    int state = CT_TRACK_TENTATIVE;
+    Axis cx, cy, w, h;
+    int age = 0, hits = 0;
+    int64_t last_update_us = 0;
+    int det_index = -1;
+    int class_id = 0;
+    float score = 0;
+
+    Box box() const;
+};
+
+// One image size: 0 x 0 when unknown.
+struct ImageSize {
+    int width = 0, height = 0;
+    bool known() const { return width > 0 && height > 0; }
+};
+
+class Engine {
+public:
+    explicit Engine(const ct_config &cfg);
+
+    // Reserves what a step with n detections needs, so that step() itself
+    // does not allocate: an allocation failure then happens before any state
+    // changes. Throws std::bad_alloc.
+    void reserve(size_t n);
+    // One step; timestamps are checked by the caller.
+    void step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n);
+    void reset();
+
+    const std::vector<ct_track> &reported() const { return reported_; }
+    bool has_time() const { return has_time_; }
+    int64_t last_time() const { return last_us_; }
+
+private:
+    void predict(double dt);
+    void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+               const ct_detection *dets, double min_iou);
+    void update(Track &t, const ct_detection &d, int index, int64_t t_us);
+    void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
+    void report(int64_t t_us, ImageSize image);
+
+    ct_config cfg_;
+    std::vector<Track> tracks_;
+    std::vector<ct_track> reported_;
+    uint64_t next_id_ = 1;
+    int64_t last_us_ = 0;
+    bool has_time_ = false;
+
+    // Scratch reused from step to step.
+    Assigner assigner_;
+    std::vector<double> cost_;
+    std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
+    std::vector<char> det_used_;
+};
+
+} // namespace ctrack
+
+#endif

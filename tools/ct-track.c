@@ -1,0 +1,376 @@
+/* ct-track: runs ctrack over a video file or standard input and writes
+ * MOTChallenge tracks. See `ct-track --help` and docs/ct-track.md. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "ctrack/ctrack.h"
+#include "detfile.h"
+#include "input.h"
+
+enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+typedef struct {
+    const char *name;
+    char type; /* 'f' float, 'd' double, 'i' int32 */
+    size_t offset;
+    const char *help;
+} param_def;
+
+static const param_def params[] = {
+    {"high_score", 'f', offsetof(ct_config, high_score), "detections at or above are matched first and start tracks"},
+    {"low_score", 'f', offsetof(ct_config, low_score), "detections below are ignored"},
+    {"match_iou", 'f', offsetof(ct_config, match_iou), "IoU gate, high-score pass"},
+    {"low_match_iou", 'f', offsetof(ct_config, low_match_iou), "IoU gate, low-score pass"},
+    {"tentative_match_iou", 'f', offsetof(ct_config, tentative_match_iou), "IoU gate for tentative tracks"},
+    {"min_hits", 'i', offsetof(ct_config, min_hits), "matched steps that confirm a track"},
+    {"lost_lifetime", 'd', offsetof(ct_config, lost_lifetime), "seconds a lost track is kept"},
+    {"report_lost_time", 'd', offsetof(ct_config, report_lost_time), "seconds a lost track is still reported"},
+    {"motion_noise", 'f', offsetof(ct_config, motion_noise), "acceleration noise, box heights/s^2"},
+    {"detection_noise", 'f', offsetof(ct_config, detection_noise), "detection noise, box heights"},
+    {"clip_boxes", 'i', offsetof(ct_config, clip_boxes), "1: clip reported boxes to the image"},
+    {"max_tracks", 'i', offsetof(ct_config, max_tracks), "upper bound on live tracks"},
+};
+
+static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)
+{
+    const char *base = (const char *)cfg + p->offset;
+    switch (p->type) {
+    case 'f': fprintf(out, "%g", (double)*(const float *)base); break;
+    case 'd': fprintf(out, "%g", *(const double *)base); break;
+    default: fprintf(out, "%d", (int)*(const int32_t *)base); break;
+    }
+}
+
+static void usage(FILE *out)
+{
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    fprintf(out,
+            "usage: ct-track [options] [INPUT]\n"
+            "\n"
+            "Tracks pedestrians and writes MOTChallenge lines\n"
+            "(frame,id,left,top,width,height,conf,-1,-1,-1).\n"
+            "\n"
+            "INPUT is a Y4M file (recognised by its header), a raw video file (give\n"
+            "--size), or '-' for standard input, e.g.\n"
+            "  ffmpeg -i clip.mp4 -f yuv4mpegpipe -pix_fmt yuv420p - | ct-track -d det.txt -\n"
+            "\n"
+            "options:\n"
+            "  -d, --detections FILE  MOTChallenge detections (frame,-1,left,top,w,h,score,...),\n"
+            "                         frames 1-based. Without INPUT: detections only.\n"
+            "  -s, --size WxH         raw video size; with detections only, the image size\n"
+            "  -f, --format FMT       raw video format: i420 (default), nv12, gray\n"
+            "  -r, --fps RATE         frame rate (default 25; a Y4M header's rate unless given)\n"
+            "      --no-pixels        read the video for its frames but give the tracker\n"
+            "                         detections only\n"
+            "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
+            "  -p, --param NAME=VALUE set a tracker parameter (repeatable), see below\n"
+            "      --progress         print progress on standard error (default when it is\n"
+            "                         a terminal)\n"
+            "  -q, --quiet            no progress\n"
+            "  -h, --help             this help\n"
+            "  -V, --version          print the version\n"
+            "\n"
+            "parameters (defaults):\n");
+    for (size_t i = 0; i < sizeof params / sizeof params[0]; i++) {
+        fprintf(out, "  %-20s ", params[i].name);
+        print_param_value(out, &cfg, &params[i]);
+        fprintf(out, "  %s\n", params[i].help);
+    }
+}
+
+static int set_param(ct_config *cfg, const char *arg)
+{
+    const char *eq = strchr(arg, '=');
+    if (!eq) {
+        fprintf(stderr, "ct-track: --param wants NAME=VALUE, got '%s'\n", arg);
+        return -1;
+    }
+    size_t len = (size_t)(eq - arg);
+    for (size_t i = 0; i < sizeof params / sizeof params[0]; i++) {
+        const param_def *p = &params[i];
+        if (strlen(p->name) != len || strncmp(p->name, arg, len) != 0)
+            continue;
+        char *end;
+        errno = 0;
+        double v = strtod(eq + 1, &end);
+        if (end == eq + 1 || *end || errno || !isfinite(v) ||
+            (p->type == 'i' && (v != floor(v) || fabs(v) > 2e9))) {
+            fprintf(stderr, "ct-track: --param %s: '%s' is not a %s\n", p->name, eq + 1,
+                    p->type == 'i' ? "whole number" : "number");
+            return -1;
+        }
+        char *base = (char *)cfg + p->offset;
+        if (p->type == 'f')
+            *(float *)base = (float)v;
+        else if (p->type == 'd')
+            *(double *)base = v;
+        else
+            *(int32_t *)base = (int32_t)v;
+        return 0;
+    }
+    fprintf(stderr, "ct-track: --param: unknown parameter '%.*s' (see --help)\n", (int)len, arg);
+    return -1;
+}
+
+static int parse_size(const char *s, int *w, int *h)
+{
+    char *end;
+    long a = strtol(s, &end, 10);
+    if (end == s || (*end != 'x' && *end != 'X'))
+        return -1;
+    const char *s2 = end + 1;
+    long b = strtol(s2, &end, 10);
+    if (end == s2 || *end || a < 1 || b < 1 || a > 16384 || b > 16384)
+        return -1;
+    *w = (int)a;
+    *h = (int)b;
+    return 0;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+int main(int argc, char **argv)
+{
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    const char *det_path = NULL, *out_path = NULL;
+    int width = 0, height = 0, no_pixels = 0;
+    int progress = isatty(STDERR_FILENO);
+    uint32_t format = CT_FORMAT_I420;
+    double fps = 0;
+
+    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS };
+    static const struct option longopts[] = {
+        {"detections", required_argument, NULL, 'd'},
+        {"size", required_argument, NULL, 's'},
+        {"format", required_argument, NULL, 'f'},
+        {"fps", required_argument, NULL, 'r'},
+        {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
+        {"output", required_argument, NULL, 'o'},
+        {"param", required_argument, NULL, 'p'},
+        {"progress", no_argument, NULL, OPT_PROGRESS},
+        {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+        {"version", no_argument, NULL, 'V'},
+        {NULL, 0, NULL, 0},
+    };
+    int c;
+    while ((c = getopt_long(argc, argv, "d:s:f:r:o:p:qhV", longopts, NULL)) != -1) {
+        switch (c) {
+        case 'd': det_path = optarg; break;
+        case 's':
+            if (parse_size(optarg, &width, &height) < 0) {
+                fprintf(stderr, "ct-track: --size: '%s' is not WxH with sides in [1, 16384]\n",
+                        optarg);
+                return EXIT_USAGE;
+            }
+            break;
+        case 'f':
+            if (!strcmp(optarg, "i420")) format = CT_FORMAT_I420;
+            else if (!strcmp(optarg, "nv12")) format = CT_FORMAT_NV12;
+            else if (!strcmp(optarg, "gray")) format = CT_FORMAT_GRAY8;
+            else {
+                fprintf(stderr, "ct-track: --format: '%s' is not i420, nv12 or gray\n", optarg);
+                return EXIT_USAGE;
+            }
+            break;
+        case 'r': {
+            char *end;
+            fps = strtod(optarg, &end);
+            if (end == optarg || *end || !(fps > 0 && fps <= 10000)) {
+                fprintf(stderr, "ct-track: --fps: '%s' is not a rate in (0, 10000]\n", optarg);
+                return EXIT_USAGE;
+            }
+            break;
+        }
+        case OPT_NO_PIXELS: no_pixels = 1; break;
+        case 'o': out_path = optarg; break;
+        case 'p':
+            if (set_param(&cfg, optarg) < 0)
+                return EXIT_USAGE;
+            break;
+        case OPT_PROGRESS: progress = 1; break;
+        case 'q': progress = 0; break;
+        case 'h': usage(stdout); return 0;
+        case 'V': printf("ct-track %s\n", ct_version_string()); return 0;
+        default: usage(stderr); return EXIT_USAGE;
+        }
+    }
+    if (argc - optind > 1) {
+        fprintf(stderr, "ct-track: one INPUT at most (got %d)\n", argc - optind);
+        return EXIT_USAGE;
+    }
+    const char *input_path = optind < argc ? argv[optind] : NULL;
+    if (!input_path && !det_path) {
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    if (!det_path) {
+        fprintf(stderr,
+                "ct-track: tracking from the pixels alone is not available in ctrack %s yet; "
+                "give detections with --detections FILE\n",
+                ct_version_string());
+        return EXIT_USAGE;
+    }
+
+    char msg[512];
+    if (ct_config_check(&cfg, msg, sizeof msg) != CT_OK) {
+        fprintf(stderr, "ct-track: %s\n", msg);
+        return EXIT_USAGE;
+    }
+
+    int rc = EXIT_RUNTIME;
+    ct_detfile df;
+    ct_input *in = NULL;
+    ct_tracker *tracker = NULL;
+    FILE *out = NULL;
+    ct_track *tracks = NULL;
+    size_t tracks_cap = 0;
+    if (ct_detfile_load(det_path, &df, msg, sizeof msg) < 0) {
+        fprintf(stderr, "ct-track: %s\n", msg);
+        return EXIT_RUNTIME;
+    }
+
+    ct_input_info info;
+    memset(&info, 0, sizeof info);
+    long long frames;
+    double rate_num = fps > 0 ? fps : 25, rate_den = 1;
+    if (input_path) {
+        ct_input_params ip = {width, height, format};
+        if (ct_input_open(input_path, &ip, &in, &info, msg, sizeof msg) < 0) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            goto done;
+        }
+        width = info.width;
+        height = info.height;
+        if (fps <= 0 && info.rate_num > 0) {
+            rate_num = info.rate_num;
+            rate_den = info.rate_den;
+        }
+        frames = info.frames;
+    } else {
+        frames = df.max_frame;
+    }
+
+    if (ct_tracker_create(&cfg, &tracker) != CT_OK) {
+        fprintf(stderr, "ct-track: cannot create the tracker\n");
+        goto done;
+    }
+    out = out_path ? fopen(out_path, "w") : stdout;
+    if (!out) {
+        fprintf(stderr, "ct-track: cannot write '%s': %s\n", out_path, strerror(errno));
+        goto done;
+    }
+
+    const double t0 = now_seconds();
+    double next_progress = t0 + 0.5;
+    long long k = 0;
+    for (;;) {
+        ct_frame frame;
+        if (in) {
+            int r = ct_input_read(in, &frame, msg, sizeof msg);
+            if (r < 0) {
+                fprintf(stderr, "ct-track: %s: %s\n", input_path, msg);
+                goto done;
+            }
+            if (r == 0)
+                break;
+            if (no_pixels) {
+                frame.format = CT_FORMAT_NONE;
+                memset(frame.planes, 0, sizeof frame.planes);
+                memset(frame.strides, 0, sizeof frame.strides);
+            }
+        } else {
+            if (k >= frames)
+                break;
+            ct_frame_default(&frame, sizeof frame);
+            frame.width = width;
+            frame.height = height;
+        }
+        k++;
+        /* Timestamps from the frame index and the rate, in microseconds. */
+        frame.timestamp_us = (int64_t)llround((double)(k - 1) * 1e6 * rate_den / rate_num);
+        size_t n;
+        const ct_detection *dets = ct_detfile_frame(&df, (int)k, &n);
+        int st = ct_tracker_feed(tracker, &frame, dets, n);
+        if (st != CT_OK) {
+            fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
+                    ct_tracker_last_error(tracker));
+            goto done;
+        }
+        size_t count = 0;
+        st = ct_tracker_get_tracks(tracker, tracks, tracks_cap, sizeof *tracks, &count);
+        if (st == CT_ERROR_BUFFER_TOO_SMALL) {
+            size_t ncap = count * 2;
+            ct_track *nt = realloc(tracks, ncap * sizeof *nt);
+            if (!nt) {
+                fprintf(stderr, "ct-track: out of memory\n");
+                goto done;
+            }
+            tracks = nt;
+            tracks_cap = ncap;
+            st = ct_tracker_get_tracks(tracker, tracks, tracks_cap, sizeof *tracks, &count);
+        }
+        if (st != CT_OK) {
+            fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
+                    ct_tracker_last_error(tracker));
+            goto done;
+        }
+        for (size_t i = 0; i < count; i++) {
+            const ct_track *t = &tracks[i];
+            fprintf(out, "%lld,%llu,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1\n", k,
+                    (unsigned long long)t->id, t->left, t->top, t->width, t->height,
+                    t->confidence);
+        }
+        if (progress) {
+            double now = now_seconds();
+            if (now >= next_progress) {
+                next_progress = now + 0.5;
+                if (frames > 0)
+                    fprintf(stderr, "\rct-track: frame %lld of %lld, %.0f frames/s", k, frames,
+                            k / (now - t0));
+                else
+                    fprintf(stderr, "\rct-track: frame %lld, %.0f frames/s", k, k / (now - t0));
+            }
+        }
+    }
+    if (progress) {
+        double el = now_seconds() - t0;
+        fprintf(stderr, "\rct-track: %lld frames in %.2f s, %.0f frames/s\n", k, el,
+                el > 0 ? k / el : 0.0);
+    }
+    if (df.max_frame > k)
+        fprintf(stderr, "ct-track: warning: detections go to frame %d, the video has %lld\n",
+                df.max_frame, k);
+    if (fflush(out) != 0 || ferror(out)) {
+        fprintf(stderr, "ct-track: error writing the tracks: %s\n", strerror(errno));
+        goto done;
+    }
+    rc = 0;
+done:
+    if (out && out != stdout) {
+        if (fclose(out) != 0 && rc == 0) {
+            fprintf(stderr, "ct-track: error writing '%s': %s\n", out_path, strerror(errno));
+            rc = EXIT_RUNTIME;
+        }
+    }
+    free(tracks);
+    ct_tracker_destroy(tracker);
+    ct_input_close(in);
+    ct_detfile_free(&df);
+    return rc;
+}

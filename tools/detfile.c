@@ -1,0 +1,161 @@
+#define _POSIX_C_SOURCE 200809L
+#include "detfile.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    int frame;
+    size_t order;
+    ct_detection det;
+} entry;
+
+static int by_frame(const void *a, const void *b)
+{
+    const entry *x = a, *y = b;
+    if (x->frame != y->frame)
+        return x->frame < y->frame ? -1 : 1;
+    return x->order < y->order ? -1 : x->order > y->order;
+}
+
+/* Parses the comma-separated numbers of one line into v (at most max).
+ * Returns how many, or -1 when a field is not a number. */
+static int parse_fields(char *line, double *v, int max)
+{
+    int n = 0;
+    char *p = line;
+    for (;;) {
+        while (*p == ' ' || *p == '\t')
+            p++;
+        char *end;
+        errno = 0;
+        double x = strtod(p, &end);
+        if (end == p || errno == ERANGE)
+            return -1;
+        if (n < max)
+            v[n] = x;
+        n++;
+        p = end;
+        while (*p == ' ' || *p == '\t' || *p == '\r')
+            p++;
+        if (*p == '\0')
+            return n;
+        if (*p != ',')
+            return -1;
+        p++;
+    }
+}
+
+int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len)
+{
+    memset(out, 0, sizeof *out);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, err_len, "cannot open detections '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    entry *list = NULL;
+    size_t count = 0, cap = 0, lineno = 0;
+    char *line = NULL;
+    size_t line_cap = 0;
+    int rc = -1;
+    ssize_t len;
+    while ((len = getline(&line, &line_cap, f)) >= 0) {
+        lineno++;
+        while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
+            line[--len] = '\0';
+        size_t lead = strspn(line, " \t");
+        if (line[lead] == '\0' || line[lead] == '#')
+            continue;
+        double v[10];
+        int n = parse_fields(line, v, 10);
+        if (n < 7) {
+            snprintf(err, err_len,
+                     "%s:%zu: malformed detection line (want frame,id,left,top,width,height,"
+                     "score,...): '%.60s'",
+                     path, lineno, line);
+            goto out;
+        }
+        if (v[0] < 1 || v[0] > 1e8 || v[0] != floor(v[0])) {
+            snprintf(err, err_len, "%s:%zu: frame %g is not a whole number >= 1", path, lineno,
+                     v[0]);
+            goto out;
+        }
+        for (int k = 2; k < 7; k++)
+            if (!isfinite(v[k]) || fabs(v[k]) > 1e6) {
+                snprintf(err, err_len, "%s:%zu: field %d (%g) is not a finite number", path,
+                         lineno, k + 1, v[k]);
+                goto out;
+            }
+        if (v[4] <= 0 || v[5] <= 0) {
+            snprintf(err, err_len, "%s:%zu: box size %gx%g is not positive", path, lineno,
+                     v[4], v[5]);
+            goto out;
+        }
+        if (count == cap) {
+            size_t ncap = cap ? cap * 2 : 1024;
+            entry *nl = realloc(list, ncap * sizeof *nl);
+            if (!nl) {
+                snprintf(err, err_len, "out of memory reading '%s'", path);
+                goto out;
+            }
+            list = nl;
+            cap = ncap;
+        }
+        entry *e = &list[count];
+        e->frame = (int)v[0];
+        e->order = count;
+        e->det.left = (float)v[2];
+        e->det.top = (float)v[3];
+        e->det.width = (float)v[4];
+        e->det.height = (float)v[5];
+        e->det.score = (float)v[6];
+        e->det.class_id = 0;
+        count++;
+    }
+    if (ferror(f)) {
+        snprintf(err, err_len, "cannot read detections '%s': %s", path, strerror(errno));
+        goto out;
+    }
+    qsort(list, count, sizeof *list, by_frame);
+    out->dets = malloc((count ? count : 1) * sizeof *out->dets);
+    out->frames = malloc((count ? count : 1) * sizeof *out->frames);
+    if (!out->dets || !out->frames) {
+        snprintf(err, err_len, "out of memory reading '%s'", path);
+        ct_detfile_free(out);
+        goto out;
+    }
+    for (size_t i = 0; i < count; i++) {
+        out->dets[i] = list[i].det;
+        out->frames[i] = list[i].frame;
+    }
+    out->count = count;
+    out->max_frame = count ? list[count - 1].frame : 0;
+    rc = 0;
+out:
+    free(line);
+    free(list);
+    fclose(f);
+    return rc;
+}
+
+const ct_detection *ct_detfile_frame(ct_detfile *df, int frame, size_t *n)
+{
+    while (df->cursor < df->count && df->frames[df->cursor] < frame)
+        df->cursor++;
+    size_t start = df->cursor;
+    while (df->cursor < df->count && df->frames[df->cursor] == frame)
+        df->cursor++;
+    *n = df->cursor - start;
+    return *n ? df->dets + start : NULL;
+}
+
+void ct_detfile_free(ct_detfile *df)
+{
+    free(df->dets);
+    free(df->frames);
+    memset(df, 0, sizeof *df);
+}

@@ -1,0 +1,25 @@
+/* MOTChallenge detection files: frame,id,left,top,width,height,score,... */
+#ifndef CT_TOOLS_DETFILE_H
+#define CT_TOOLS_DETFILE_H
+
+#include <stddef.h>
+
+#include "ctrack/ctrack.h"
+
+typedef struct ct_detfile {
+    ct_detection *dets; /* sorted by frame, file order within a frame */
+    int *frames;        /* 1-based frame of each detection */
+    size_t count;
+    int max_frame;      /* 0 when the file is empty */
+    size_t cursor;      /* next detection for ct_detfile_frame() */
+} ct_detfile;
+
+/* Loads a whole file. Returns 0, or -1 with "FILE:LINE: what" in err. */
+int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len);
+
+/* The detections of `frame` (frames must be asked in increasing order). */
+const ct_detection *ct_detfile_frame(ct_detfile *df, int frame, size_t *n);
+
+void ct_detfile_free(ct_detfile *df);
+
+#endif

@@ -1,0 +1,284 @@
+#define _POSIX_C_SOURCE 200809L
+#include "input.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define Y4M_SIGNATURE "YUV4MPEG2 "
+#define Y4M_MAX_LINE 1024
+#define MAX_SIDE 16384
+
+struct ct_input {
+    FILE *f;
+    int owns_file;
+    int y4m;
+    int width, height;
+    uint32_t format;
+    size_t frame_bytes;
+    uint8_t *buf;
+    /* Bytes already read past the signature check, replayed first. */
+    unsigned char pending[16];
+    size_t pending_len, pending_pos;
+    long long frame_index;
+};
+
+size_t ct_frame_bytes(uint32_t format, int width, int height)
+{
+    if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE)
+        return 0;
+    size_t luma = (size_t)width * (size_t)height;
+    size_t chroma = (size_t)((width + 1) / 2) * (size_t)((height + 1) / 2);
+    switch (format) {
+    case CT_FORMAT_GRAY8: return luma;
+    case CT_FORMAT_I420:
+    case CT_FORMAT_NV12: return luma + 2 * chroma;
+    default: return 0;
+    }
+}
+
+/* Reads up to n bytes, first from the replay buffer; returns bytes read. */
+static size_t read_bytes(ct_input *in, void *dst, size_t n)
+{
+    size_t got = 0;
+    unsigned char *d = dst;
+    while (got < n && in->pending_pos < in->pending_len)
+        d[got++] = in->pending[in->pending_pos++];
+    if (got < n)
+        got += fread(d + got, 1, n - got, in->f);
+    return got;
+}
+
+/* Reads one line (without '\n') of at most max bytes. Returns its length, -1
+ * at end of file before any byte, -2 when too long or cut by end of file. */
+static long read_line(ct_input *in, char *line, size_t max)
+{
+    size_t n = 0;
+    for (;;) {
+        unsigned char c;
+        if (read_bytes(in, &c, 1) != 1)
+            return n == 0 ? -1 : -2;
+        if (c == '\n')
+            break;
+        if (n + 1 >= max)
+            return -2;
+        line[n++] = (char)c;
+    }
+    line[n] = '\0';
+    return (long)n;
+}
+
+static int parse_y4m_header(ct_input *in, ct_input_info *info, char *err, size_t err_len)
+{
+    char line[Y4M_MAX_LINE];
+    long len = read_line(in, line, sizeof line);
+    if (len < 0) {
+        snprintf(err, err_len, "bad Y4M header: %s", len == -1 ? "empty" : "too long or cut");
+        return -1;
+    }
+    int w = 0, h = 0, rn = 0, rd = 0;
+    uint32_t format = CT_FORMAT_I420; /* 4:2:0 is Y4M's default */
+    char *save = NULL;
+    char *tok = strtok_r(line + strlen(Y4M_SIGNATURE) - 1, " ", &save);
+    for (; tok; tok = strtok_r(NULL, " ", &save)) {
+        char *end = NULL;
+        switch (tok[0]) {
+        case 'W':
+            w = (int)strtol(tok + 1, &end, 10);
+            if (*end || end == tok + 1) w = -1;
+            break;
+        case 'H':
+            h = (int)strtol(tok + 1, &end, 10);
+            if (*end || end == tok + 1) h = -1;
+            break;
+        case 'F':
+            if (sscanf(tok + 1, "%d:%d", &rn, &rd) != 2 || rn <= 0 || rd <= 0) {
+                snprintf(err, err_len, "bad Y4M header: frame rate '%s'", tok);
+                return -1;
+            }
+            break;
+        case 'C':
+            if (!strcmp(tok, "C420") || !strcmp(tok, "C420jpeg") ||
+                !strcmp(tok, "C420paldv") || !strcmp(tok, "C420mpeg2")) {
+                format = CT_FORMAT_I420;
+            } else if (!strcmp(tok, "Cmono")) {
+                format = CT_FORMAT_GRAY8;
+            } else {
+                snprintf(err, err_len,
+                         "unsupported Y4M colour space '%s': ct-track reads 4:2:0 "
+                         "(C420, C420jpeg, C420paldv, C420mpeg2) and Cmono; convert with "
+                         "ffmpeg -pix_fmt yuv420p",
+                         tok + 1);
+                return -1;
+            }
+            break;
+        case 'I':
+        case 'A':
+        case 'X':
+            break; /* interlacing, aspect and extensions do not matter here */
+        default:
+            snprintf(err, err_len, "bad Y4M header: unknown field '%s'", tok);
+            return -1;
+        }
+    }
+    if (w < 1 || h < 1 || w > MAX_SIDE || h > MAX_SIDE) {
+        snprintf(err, err_len, "bad Y4M header: size %dx%d is missing or absurd", w, h);
+        return -1;
+    }
+    in->width = w;
+    in->height = h;
+    in->format = format;
+    info->rate_num = rn;
+    info->rate_den = rd;
+    info->frames = -1;
+    return 0;
+}
+
+int ct_input_open(const char *path, const ct_input_params *params, ct_input **out,
+                  ct_input_info *info, char *err, size_t err_len)
+{
+    *out = NULL;
+    memset(info, 0, sizeof *info);
+    ct_input *in = calloc(1, sizeof *in);
+    if (!in) {
+        snprintf(err, err_len, "out of memory");
+        return -1;
+    }
+    int is_stdin = !strcmp(path, "-");
+    if (is_stdin) {
+        in->f = stdin;
+    } else {
+        in->f = fopen(path, "rb");
+        if (!in->f) {
+            snprintf(err, err_len, "cannot open '%s': %s", path, strerror(errno));
+            free(in);
+            return -1;
+        }
+        in->owns_file = 1;
+        struct stat st;
+        if (fstat(fileno(in->f), &st) == 0 && S_ISDIR(st.st_mode)) {
+            snprintf(err, err_len, "cannot read '%s': it is a directory", path);
+            ct_input_close(in);
+            return -1;
+        }
+    }
+
+    in->pending_len = fread(in->pending, 1, strlen(Y4M_SIGNATURE), in->f);
+    if (ferror(in->f)) {
+        snprintf(err, err_len, "cannot read '%s': %s", path, strerror(errno));
+        ct_input_close(in);
+        return -1;
+    }
+    in->y4m = in->pending_len == strlen(Y4M_SIGNATURE) &&
+              !memcmp(in->pending, Y4M_SIGNATURE, strlen(Y4M_SIGNATURE));
+    if (in->y4m) {
+        /* Keep the space so the tokenizer sees " W640 ..." after it. */
+        in->pending_pos = 0;
+        if (parse_y4m_header(in, info, err, err_len) < 0) {
+            ct_input_close(in);
+            return -1;
+        }
+    } else {
+        if (params->width <= 0 || params->height <= 0) {
+            snprintf(err, err_len,
+                     "'%s' is not Y4M: give the raw video's size with --size WxH", path);
+            ct_input_close(in);
+            return -1;
+        }
+        in->width = params->width;
+        in->height = params->height;
+        in->format = params->format;
+        info->frames = -1;
+    }
+    in->frame_bytes = ct_frame_bytes(in->format, in->width, in->height);
+    if (in->frame_bytes == 0) {
+        snprintf(err, err_len, "size %dx%d is absurd (each side must be in [1, %d])",
+                 in->width, in->height, MAX_SIDE);
+        ct_input_close(in);
+        return -1;
+    }
+    if (!in->y4m && !is_stdin) {
+        struct stat st;
+        if (fstat(fileno(in->f), &st) == 0 && S_ISREG(st.st_mode)) {
+            long long total = (long long)st.st_size;
+            if (total % (long long)in->frame_bytes != 0) {
+                snprintf(err, err_len,
+                         "'%s' has %lld bytes, not a whole number of %dx%d frames of %zu "
+                         "bytes: check --size and --format",
+                         path, total, in->width, in->height, in->frame_bytes);
+                ct_input_close(in);
+                return -1;
+            }
+            info->frames = total / (long long)in->frame_bytes;
+        }
+    }
+    in->buf = malloc(in->frame_bytes);
+    if (!in->buf) {
+        snprintf(err, err_len, "out of memory for a %dx%d frame", in->width, in->height);
+        ct_input_close(in);
+        return -1;
+    }
+    info->width = in->width;
+    info->height = in->height;
+    info->format = in->format;
+    *out = in;
+    return 0;
+}
+
+int ct_input_read(ct_input *in, ct_frame *frame, char *err, size_t err_len)
+{
+    if (in->y4m) {
+        char line[Y4M_MAX_LINE];
+        long len = read_line(in, line, sizeof line);
+        if (len == -1)
+            return 0;
+        if (len < 0 || strncmp(line, "FRAME", 5) != 0 || (line[5] != '\0' && line[5] != ' ')) {
+            snprintf(err, err_len, "bad Y4M frame header at frame %lld", in->frame_index + 1);
+            return -1;
+        }
+    }
+    size_t got = read_bytes(in, in->buf, in->frame_bytes);
+    if (got == 0 && !in->y4m && !ferror(in->f))
+        return 0;
+    if (got < in->frame_bytes) {
+        if (ferror(in->f))
+            snprintf(err, err_len, "read error at frame %lld: %s", in->frame_index + 1,
+                     strerror(errno));
+        else
+            snprintf(err, err_len,
+                     "truncated frame %lld: %zu of %zu bytes (check --size and --format)",
+                     in->frame_index + 1, got, in->frame_bytes);
+        return -1;
+    }
+    in->frame_index++;
+
+    ct_frame_default(frame, sizeof *frame);
+    frame->format = in->format;
+    frame->width = in->width;
+    frame->height = in->height;
+    const int cw = (in->width + 1) / 2, ch = (in->height + 1) / 2;
+    const size_t luma = (size_t)in->width * (size_t)in->height;
+    frame->planes[0] = in->buf;
+    frame->strides[0] = in->width;
+    if (in->format == CT_FORMAT_I420) {
+        frame->planes[1] = in->buf + luma;
+        frame->planes[2] = in->buf + luma + (size_t)cw * ch;
+        frame->strides[1] = frame->strides[2] = cw;
+    } else if (in->format == CT_FORMAT_NV12) {
+        frame->planes[1] = in->buf + luma;
+        frame->strides[1] = 2 * cw;
+    }
+    return 1;
+}
+
+void ct_input_close(ct_input *in)
+{
+    if (!in)
+        return;
+    if (in->owns_file && in->f)
+        fclose(in->f);
+    free(in->buf);
+    free(in);
+}
