@@ -39,20 +39,20 @@ void Assigner::solve(const double *cost, int n, int m, double limit,
 
     // Nodes ordered by component root, so each component is a run.
     order_.resize(n + m);
+    root_.resize(n + m);
     for (int i = 0; i < n + m; i++) {
         order_[i] = i;
-        find_root(parent_, i);
+        root_[i] = find_root(parent_, i);
     }
     std::sort(order_.begin(), order_.end(), [this](int a, int b) {
-        int ra = parent_[a], rb = parent_[b];
-        return ra != rb ? ra < rb : a < b;
+        return root_[a] != root_[b] ? root_[a] < root_[b] : a < b;
     });
 
     for (size_t s = 0; s < order_.size();) {
         size_t e = s;
         comp_rows_.clear();
         comp_cols_.clear();
-        while (e < order_.size() && parent_[order_[e]] == parent_[order_[s]]) {
+        while (e < order_.size() && root_[order_[e]] == root_[order_[s]]) {
             int node = order_[e++];
             if (node < n)
                 comp_rows_.push_back(node);

@@ -23,7 +23,7 @@ public:
 private:
     void solve_component(const double *cost, int m, double limit);
 
-    std::vector<int> parent_, comp_rows_, comp_cols_, order_;
+    std::vector<int> parent_, root_, comp_rows_, comp_cols_, order_;
     std::vector<double> sub_, u_, v_, minv_;
     std::vector<int> p_, way_;
     std::vector<char> used_;

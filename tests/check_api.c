@@ -1,0 +1,343 @@
+/* Every entry point's bad arguments, frame and detection validation,
+ * timestamps, status strings and the version. */
+#include <math.h>
+#include <stdio.h>
+
+#include "common.h"
+
+START_TEST(status_strings)
+{
+    const int codes[] = {CT_OK, CT_ERROR_INVALID_ARGUMENT, CT_ERROR_OUT_OF_MEMORY,
+                         CT_ERROR_UNSUPPORTED, CT_ERROR_BUFFER_TOO_SMALL, CT_ERROR_BAD_STATE,
+                         CT_ERROR_INTERNAL};
+    for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++) {
+        ck_assert_ptr_nonnull(ct_status_str(codes[i]));
+        ck_assert_str_ne(ct_status_str(codes[i]), "unknown status");
+    }
+    ck_assert_str_eq(ct_status_str(12345), "unknown status");
+    /* The values are pinned. */
+    ck_assert_int_eq(CT_ERROR_INVALID_ARGUMENT, -1);
+    ck_assert_int_eq(CT_ERROR_INTERNAL, -6);
+}
+END_TEST
+
+START_TEST(version)
+{
+    char want[32];
+    snprintf(want, sizeof want, "%d.%d.%d", CT_VERSION_MAJOR, CT_VERSION_MINOR, CT_VERSION_PATCH);
+    ck_assert_str_eq(ct_version_string(), want);
+    ck_assert_uint_eq(ct_version_number(), CT_VERSION_NUMBER);
+    ck_assert_uint_eq(ct_abi_version(), CT_ABI_VERSION);
+}
+END_TEST
+
+START_TEST(create_and_destroy_bad_arguments)
+{
+    ct_config cfg = test_config();
+    ck_assert_int_eq(ct_tracker_create(&cfg, NULL), CT_ERROR_INVALID_ARGUMENT);
+    ct_tracker *t = (ct_tracker *)&cfg;
+    ck_assert_int_eq(ct_tracker_create(NULL, &t), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(t);
+    ct_tracker_destroy(NULL);
+    ck_assert_str_eq(ct_tracker_last_error(NULL), "");
+}
+END_TEST
+
+START_TEST(null_tracker)
+{
+    ct_frame f = test_frame(0, 0, 0);
+    ct_track out[4];
+    size_t count = 99;
+    ck_assert_int_eq(ct_tracker_feed(NULL, &f, NULL, 0), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_tracks(NULL, out, 4, sizeof out[0], &count),
+                     CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_reset(NULL), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_frame_default(NULL, sizeof f), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_frame_default(&f, 1), CT_ERROR_INVALID_ARGUMENT);
+}
+END_TEST
+
+START_TEST(get_tracks_bad_arguments)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_detection d[2] = {test_det(10, 10, 20, 40, 0.9f), test_det(100, 10, 20, 40, 0.9f)};
+    ct_frame f = test_frame(0, 0, 0);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, d, 2), CT_OK);
+    ct_track out[4];
+    size_t count = 0;
+
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 4, sizeof out[0], NULL),
+                     CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "count"));
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 4, sizeof out[0] - 4, &count),
+                     CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "elem_size"));
+    ck_assert_int_eq(ct_tracker_get_tracks(t, NULL, 4, sizeof out[0], &count),
+                     CT_ERROR_INVALID_ARGUMENT);
+
+    /* Too small: nothing copied, the count needed reported. */
+    memset(out, 0x5A, sizeof out);
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 1, sizeof out[0], &count),
+                     CT_ERROR_BUFFER_TOO_SMALL);
+    ck_assert_uint_eq(count, 2);
+    ck_assert_uint_eq(((unsigned char *)out)[0], 0x5A);
+    ck_assert_int_eq(ct_tracker_get_tracks(t, NULL, 0, sizeof out[0], &count),
+                     CT_ERROR_BUFFER_TOO_SMALL);
+    ck_assert_uint_eq(count, 2);
+
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 4, sizeof out[0], &count), CT_OK);
+    ck_assert_uint_eq(count, 2);
+    ck_assert_str_eq(ct_tracker_last_error(t), "");
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* A newer caller's bigger ct_track: the library fills what it knows and
+ * zeroes the rest of each element. */
+START_TEST(get_tracks_bigger_elements)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_detection d[2] = {test_det(10, 10, 20, 40, 0.9f), test_det(100, 10, 20, 40, 0.8f)};
+    ct_frame f = test_frame(0, 0, 0);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, d, 2), CT_OK);
+    struct big {
+        ct_track t;
+        uint64_t extra[3];
+    } out[2];
+    memset(out, 0x5A, sizeof out);
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, &out[0].t, 2, sizeof out[0], &count), CT_OK);
+    ck_assert_uint_eq(count, 2);
+    ck_assert_uint_eq(out[1].t.id, out[0].t.id + 1);
+    ck_assert_float_eq_tol(out[1].t.left, 100, 1e-3);
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 3; k++)
+            ck_assert_uint_eq(out[i].extra[k], 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Frames that must be refused, with the part of the message that names the
+ * fault. Each leaves the tracker as it was. */
+typedef struct {
+    const char *needle;
+    int status;
+    void (*spoil)(ct_frame *);
+} bad_frame;
+
+static uint8_t pixels[64 * 48 * 2];
+
+static void make_i420(ct_frame *f)
+{
+    f->format = CT_FORMAT_I420;
+    f->width = 64;
+    f->height = 48;
+    f->planes[0] = pixels;
+    f->planes[1] = pixels + 64 * 48;
+    f->planes[2] = pixels + 64 * 48 + 32 * 24;
+    f->strides[0] = 64;
+    f->strides[1] = f->strides[2] = 32;
+}
+
+static void no_frame_size(ct_frame *f) { f->size = 0; }
+static void unknown_tail(ct_frame *f) { (void)f; }
+static void bad_format(ct_frame *f) { f->format = 0x12345678; }
+static void i420_null_plane(ct_frame *f) { make_i420(f); f->planes[2] = NULL; }
+static void i420_short_stride(ct_frame *f) { make_i420(f); f->strides[0] = 63; }
+static void i420_short_chroma(ct_frame *f) { make_i420(f); f->strides[1] = 31; }
+static void i420_negative_stride(ct_frame *f) { make_i420(f); f->strides[2] = -32; }
+static void i420_zero_width(ct_frame *f) { make_i420(f); f->width = 0; }
+static void i420_absurd_height(ct_frame *f) { make_i420(f); f->height = 1 << 20; }
+static void nv12_short_uv(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_NV12; f->strides[1] = 32; }
+static void gray_null(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_GRAY8; f->planes[0] = NULL; }
+static void none_half_size(ct_frame *f) { f->width = 640; f->height = 0; }
+static void none_negative(ct_frame *f) { f->width = -5; f->height = -5; }
+
+static const bad_frame bad_frames[] = {
+    {"frame.size", CT_ERROR_INVALID_ARGUMENT, no_frame_size},
+    {"frame.size", CT_ERROR_UNSUPPORTED, unknown_tail},
+    {"frame.format", CT_ERROR_UNSUPPORTED, bad_format},
+    {"frame.planes[2]", CT_ERROR_INVALID_ARGUMENT, i420_null_plane},
+    {"frame.strides[0]", CT_ERROR_INVALID_ARGUMENT, i420_short_stride},
+    {"frame.strides[1]", CT_ERROR_INVALID_ARGUMENT, i420_short_chroma},
+    {"frame.strides[2]", CT_ERROR_INVALID_ARGUMENT, i420_negative_stride},
+    {"frame.width", CT_ERROR_INVALID_ARGUMENT, i420_zero_width},
+    {"frame.width", CT_ERROR_INVALID_ARGUMENT, i420_absurd_height},
+    {"frame.strides[1]", CT_ERROR_INVALID_ARGUMENT, nv12_short_uv},
+    {"frame.planes[0]", CT_ERROR_INVALID_ARGUMENT, gray_null},
+    {"frame.width", CT_ERROR_INVALID_ARGUMENT, none_half_size},
+    {"frame.width", CT_ERROR_INVALID_ARGUMENT, none_negative},
+};
+
+/* Feeds one good step, then `bad`, and checks the refusal changed nothing:
+ * the same tracks are reported, and the next good step goes on as if the
+ * bad call never happened. */
+static void assert_refused_changes_nothing(const ct_frame *bad, const ct_detection *bd,
+                                           size_t bn, int status, const char *needle)
+{
+    ct_tracker *t = test_tracker(NULL), *ref = test_tracker(NULL);
+    ct_detection d = test_det(10, 10, 20, 40, 0.9f);
+    ct_track a[64], b[64];
+    for (int k = 0; k < 3; k++) {
+        test_step(t, 1000 * k, &d, 1, a);
+        test_step(ref, 1000 * k, &d, 1, b);
+    }
+    ck_assert_int_eq(ct_tracker_feed(t, bad, bd, bn), status);
+    const char *msg = ct_tracker_last_error(t);
+    ck_assert_msg(strstr(msg, needle) != NULL, "message '%s' lacks '%s'", msg, needle);
+    size_t na = 0, nb = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, a, 64, sizeof a[0], &na), CT_OK);
+    ck_assert_int_eq(ct_tracker_get_tracks(ref, b, 64, sizeof b[0], &nb), CT_OK);
+    ck_assert_uint_eq(na, nb);
+    ck_assert_mem_eq(a, b, na * sizeof a[0]);
+    d.left += 2;
+    na = test_step(t, 5000, &d, 1, a);
+    nb = test_step(ref, 5000, &d, 1, b);
+    ck_assert_uint_eq(na, nb);
+    ck_assert_mem_eq(a, b, na * sizeof a[0]);
+    ct_tracker_destroy(t);
+    ct_tracker_destroy(ref);
+}
+
+START_TEST(bad_frame_is_refused)
+{
+    const bad_frame *bf = &bad_frames[_i];
+    struct {
+        ct_frame f;
+        uint32_t tail;
+    } big;
+    memset(&big, 0, sizeof big);
+    ct_frame_default(&big.f, sizeof big.f);
+    big.f.timestamp_us = 4000;
+    bf->spoil(&big.f);
+    if (bf->spoil == unknown_tail) {
+        big.f.size = sizeof big;
+        big.tail = 7;
+    }
+    assert_refused_changes_nothing(&big.f, NULL, 0, bf->status, bf->needle);
+}
+END_TEST
+
+START_TEST(null_frame)
+{
+    assert_refused_changes_nothing(NULL, NULL, 0, CT_ERROR_INVALID_ARGUMENT, "frame");
+}
+END_TEST
+
+START_TEST(good_pixel_frames)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_frame f = test_frame(0, 0, 0);
+    make_i420(&f);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    f.format = CT_FORMAT_NV12;
+    f.strides[1] = 64;
+    f.timestamp_us = 1;
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    f.format = CT_FORMAT_GRAY8;
+    f.planes[1] = f.planes[2] = NULL;
+    f.timestamp_us = 2;
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    /* Odd sizes: chroma is (w + 1) / 2 wide. */
+    make_i420(&f);
+    f.width = 63;
+    f.height = 47;
+    f.strides[0] = 63;
+    f.strides[1] = f.strides[2] = 32;
+    f.timestamp_us = 3;
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+typedef struct {
+    const char *needle;
+    ct_detection det;
+} bad_det;
+
+static const bad_det bad_dets[] = {
+    {"dets[1].left", {NAN, 0, 10, 10, 0.9f, 0}},
+    {"dets[1].top", {0, INFINITY, 10, 10, 0.9f, 0}},
+    {"dets[1].width", {0, 0, 0, 10, 0.9f, 0}},
+    {"dets[1].width", {0, 0, -3, 10, 0.9f, 0}},
+    {"dets[1].height", {0, 0, 10, NAN, 0.9f, 0}},
+    {"dets[1].height", {0, 0, 10, 1e30f, 0.9f, 0}},
+    {"dets[1].left", {-1e9f, 0, 10, 10, 0.9f, 0}},
+    {"dets[1].score", {0, 0, 10, 10, NAN, 0}},
+    {"dets[1].score", {0, 0, 10, 10, -INFINITY, 0}},
+};
+
+START_TEST(bad_detection_is_refused)
+{
+    ct_detection d[2] = {test_det(10, 10, 20, 40, 0.9f), bad_dets[_i].det};
+    ct_frame f = test_frame(4000, 0, 0);
+    assert_refused_changes_nothing(&f, d, 2, CT_ERROR_INVALID_ARGUMENT, bad_dets[_i].needle);
+}
+END_TEST
+
+START_TEST(null_detections_with_count)
+{
+    ct_frame f = test_frame(4000, 0, 0);
+    assert_refused_changes_nothing(&f, NULL, 3, CT_ERROR_INVALID_ARGUMENT, "dets");
+}
+END_TEST
+
+START_TEST(absurd_detection_count)
+{
+    ct_frame f = test_frame(4000, 0, 0);
+    ct_detection d = test_det(10, 10, 20, 40, 0.9f);
+    assert_refused_changes_nothing(&f, &d, (size_t)1 << 40, CT_ERROR_INVALID_ARGUMENT, "n:");
+}
+END_TEST
+
+START_TEST(timestamp_must_increase)
+{
+    ct_frame same = test_frame(2000, 0, 0);
+    assert_refused_changes_nothing(&same, NULL, 0, CT_ERROR_BAD_STATE, "timestamp");
+    ct_frame back = test_frame(-5, 0, 0);
+    assert_refused_changes_nothing(&back, NULL, 0, CT_ERROR_BAD_STATE, "timestamp");
+}
+END_TEST
+
+START_TEST(reset_forgets_time_and_tracks)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_detection d = test_det(10, 10, 20, 40, 0.9f);
+    ct_track out[64];
+    ck_assert_uint_eq(test_step(t, 1000000, &d, 1, out), 1);
+    ck_assert_int_eq(ct_tracker_reset(t), CT_OK);
+    size_t count = 7;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 64, sizeof out[0], &count), CT_OK);
+    ck_assert_uint_eq(count, 0);
+    /* An earlier timestamp is fine after a reset. */
+    ck_assert_uint_eq(test_step(t, 0, &d, 1, out), 1);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+static Suite *api_suite(void)
+{
+    Suite *s = suite_create("api");
+    TCase *tc = tcase_create("api");
+    tcase_add_test(tc, status_strings);
+    tcase_add_test(tc, version);
+    tcase_add_test(tc, create_and_destroy_bad_arguments);
+    tcase_add_test(tc, null_tracker);
+    tcase_add_test(tc, get_tracks_bad_arguments);
+    tcase_add_test(tc, get_tracks_bigger_elements);
+    tcase_add_loop_test(tc, bad_frame_is_refused, 0, (int)(sizeof bad_frames / sizeof bad_frames[0]));
+    tcase_add_test(tc, null_frame);
+    tcase_add_test(tc, good_pixel_frames);
+    tcase_add_loop_test(tc, bad_detection_is_refused, 0, (int)(sizeof bad_dets / sizeof bad_dets[0]));
+    tcase_add_test(tc, null_detections_with_count);
+    tcase_add_test(tc, absurd_detection_count);
+    tcase_add_test(tc, timestamp_must_increase);
+    tcase_add_test(tc, reset_forgets_time_and_tracks);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(api_suite());
+}

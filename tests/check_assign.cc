@@ -1,0 +1,144 @@
+// The assignment solver against a brute-force optimum on small random
+// problems (internal API).
+#include <check.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "assign.h"
+
+namespace {
+
+// Cost of an assignment in the solver's convention: matched costs plus
+// limit / 2 for every row and every column left unmatched.
+double total(const std::vector<double> &c, int n, int m, double limit,
+             const std::vector<int> &row_to_col)
+{
+    double s = 0;
+    int matched = 0;
+    for (int i = 0; i < n; i++)
+        if (row_to_col[i] >= 0) {
+            s += c[i * m + row_to_col[i]];
+            matched++;
+        }
+    return s + (n + m - 2 * matched) * limit / 2;
+}
+
+// Tries every partial matching that uses only allowed pairs.
+double brute_force(const std::vector<double> &c, int n, int m, double limit)
+{
+    double best = INFINITY;
+    std::vector<int> r2c(n, -1);
+    std::vector<char> used(m, 0);
+    std::function<void(int)> rec = [&](int i) {
+        if (i == n) {
+            best = std::min(best, total(c, n, m, limit, r2c));
+            return;
+        }
+        r2c[i] = -1;
+        rec(i + 1);
+        for (int j = 0; j < m; j++)
+            if (!used[j] && c[i * m + j] < limit) {
+                used[j] = 1;
+                r2c[i] = j;
+                rec(i + 1);
+                used[j] = 0;
+                r2c[i] = -1;
+            }
+    };
+    rec(0);
+    return best;
+}
+
+uint64_t rng_state = 88172645463325252ull;
+double uniform()
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+} // namespace
+
+START_TEST(matches_brute_force)
+{
+    ctrack::Assigner a;
+    std::vector<int> r2c;
+    for (int trial = 0; trial < 3000; trial++) {
+        int n = (int)(uniform() * 7), m = (int)(uniform() * 7);
+        double limit = 0.2 + 0.8 * uniform();
+        std::vector<double> c(n * m);
+        for (double &x : c) {
+            x = uniform();
+            if (uniform() < 0.1)
+                x = std::round(x * 4) / 4; // ties
+        }
+        a.solve(c.data(), n, m, limit, r2c);
+        ck_assert_int_eq((int)r2c.size(), n);
+        std::vector<char> used(m, 0);
+        for (int i = 0; i < n; i++) {
+            int j = r2c[i];
+            if (j < 0)
+                continue;
+            ck_assert_int_lt(j, m);
+            ck_assert_msg(!used[j], "column %d used twice", j);
+            used[j] = 1;
+            ck_assert(c[i * m + j] < limit);
+        }
+        double got = total(c, n, m, limit, r2c), want = brute_force(c, n, m, limit);
+        ck_assert_msg(std::fabs(got - want) < 1e-9, "trial %d (%dx%d): %g, optimum %g", trial,
+                      n, m, got, want);
+    }
+}
+END_TEST
+
+// Separate groups of people are solved apart: a big sparse problem still
+// gets the diagonal answer.
+START_TEST(block_diagonal)
+{
+    const int n = 300;
+    std::vector<double> c(n * n, 1.0);
+    for (int i = 0; i < n; i++) {
+        c[i * n + i] = 0.1;
+        if (i + 1 < n)
+            c[i * n + i + 1] = 0.5;
+    }
+    ctrack::Assigner a;
+    std::vector<int> r2c;
+    a.solve(c.data(), n, n, 0.8, r2c);
+    for (int i = 0; i < n; i++)
+        ck_assert_int_eq(r2c[i], i);
+}
+END_TEST
+
+START_TEST(nothing_allowed)
+{
+    std::vector<double> c = {0.9, 0.95, 1.0, 0.99};
+    ctrack::Assigner a;
+    std::vector<int> r2c;
+    a.solve(c.data(), 2, 2, 0.5, r2c);
+    ck_assert_int_eq(r2c[0], -1);
+    ck_assert_int_eq(r2c[1], -1);
+    a.solve(nullptr, 0, 5, 0.5, r2c);
+    ck_assert_int_eq((int)r2c.size(), 0);
+}
+END_TEST
+
+int main()
+{
+    Suite *s = suite_create("assign");
+    TCase *tc = tcase_create("assign");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, matches_brute_force);
+    tcase_add_test(tc, block_diagonal);
+    tcase_add_test(tc, nothing_allowed);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}

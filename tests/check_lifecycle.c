@@ -1,0 +1,249 @@
+/* Track lifecycles: confirmation, gaps, removal, ids, motion in time. */
+#include <math.h>
+#include <stdbool.h>
+
+#include "common.h"
+
+#define SEC 1000000LL
+
+/* A person walking right at `speed` px/s, seen at time us. */
+static ct_detection walker(int64_t us, float x0, float speed)
+{
+    return test_det(x0 + speed * (float)us / SEC, 100, 30, 80, 0.9f);
+}
+
+START_TEST(tentative_tracks_are_not_reported)
+{
+    ct_config cfg = test_config();
+    cfg.min_hits = 3;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    ct_detection d;
+    /* Step 0 confirms at once: the first frame has no earlier evidence. */
+    test_step(t, 0, NULL, 0, out);
+    for (int k = 1; k <= 3; k++) {
+        d = walker(k * SEC / 10, 100, 50);
+        size_t n = test_step(t, k * SEC / 10, &d, 1, out);
+        ck_assert_uint_eq(n, k < 3 ? 0 : 1);
+    }
+    ck_assert_int_eq(out[0].state, CT_TRACK_CONFIRMED);
+    ck_assert_int_eq(out[0].hits, 3);
+    ck_assert_int_eq(out[0].age, 3);
+    ck_assert_int_eq(out[0].detection_index, 0);
+    ck_assert_uint_eq(out[0].id, 1);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+START_TEST(first_step_confirms)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    ct_detection d[3] = {walker(0, 0, 0), walker(0, 200, 0), walker(0, 400, 0)};
+    ck_assert_uint_eq(test_step(t, 0, d, 3, out), 3);
+    for (int i = 0; i < 3; i++) {
+        ck_assert_uint_eq(out[i].id, (uint64_t)i + 1);
+        ck_assert_int_eq(out[i].detection_index, i);
+        ck_assert_float_eq_tol(out[i].left, d[i].left, 1e-3);
+        ck_assert_float_eq_tol(out[i].barycenter_x, d[i].left + 15, 1e-3);
+        ck_assert_float_eq_tol(out[i].barycenter_y, d[i].top + 40, 1e-3);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* A person missed by the detector for less than lost_lifetime keeps the
+ * same id; the gap is reported as lost for report_lost_time at most. */
+START_TEST(track_survives_a_gap)
+{
+    ct_config cfg = test_config();
+    cfg.lost_lifetime = 1.0;
+    cfg.report_lost_time = 0.15;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    const int64_t step = SEC / 10;
+    uint64_t id = 0;
+    for (int k = 0; k < 30; k++) {
+        int64_t us = k * step;
+        ct_detection d = walker(us, 50, 60);
+        bool seen = k < 10 || k >= 17; /* 0.7 s without a detection */
+        size_t n = test_step(t, us, seen ? &d : NULL, seen ? 1 : 0, out);
+        if (seen) {
+            ck_assert_uint_eq(n, 1);
+            if (!id)
+                id = out[0].id;
+            ck_assert_uint_eq(out[0].id, id);
+            ck_assert_int_eq(out[0].state, CT_TRACK_CONFIRMED);
+        } else if (k - 9 <= 1) { /* 0.1 s lost: still reported */
+            ck_assert_uint_eq(n, 1);
+            ck_assert_int_eq(out[0].state, CT_TRACK_LOST);
+            ck_assert_int_eq(out[0].detection_index, -1);
+            ck_assert(out[0].time_since_update > 0.05);
+            ck_assert(out[0].confidence < 0.9f);
+            /* Predicted forward, not frozen. */
+            ck_assert(out[0].left > 50 + 60 * 0.9f);
+        } else {
+            ck_assert_uint_eq(n, 0);
+        }
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+START_TEST(lost_track_is_removed_and_ids_are_not_reused)
+{
+    ct_config cfg = test_config();
+    cfg.lost_lifetime = 0.5;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    ct_detection d = walker(0, 50, 0);
+    for (int k = 0; k < 5; k++)
+        ck_assert_uint_eq(test_step(t, k * SEC / 10, &d, 1, out), 1);
+    uint64_t first = out[0].id;
+    /* 0.6 s with nobody: the track is gone... */
+    for (int k = 5; k < 11; k++)
+        test_step(t, k * SEC / 10, NULL, 0, out);
+    /* ...so the same place starts a new track with a new id. */
+    size_t n = 0;
+    for (int k = 11; k < 16; k++)
+        n = test_step(t, k * SEC / 10, &d, 1, out);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_uint_gt(out[0].id, first);
+    uint64_t second = out[0].id;
+    /* Ids keep increasing across a reset. */
+    ck_assert_int_eq(ct_tracker_reset(t), CT_OK);
+    ck_assert_uint_eq(test_step(t, 0, &d, 1, out), 1);
+    ck_assert_uint_gt(out[0].id, second);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Velocity is in pixels per second from the timestamps: the same motion fed
+ * at 10 and at 25 frames per second, with dropped frames, gives the same
+ * speed. */
+START_TEST(velocity_uses_time)
+{
+    const int rates[] = {10, 25};
+    for (int r = 0; r < 2; r++) {
+        ct_tracker *t = test_tracker(NULL);
+        ct_track out[64];
+        size_t n = 0;
+        int64_t step = SEC / rates[r];
+        for (int k = 0; k < rates[r] * 4; k++) {
+            if (k % 7 == 3)
+                continue; /* a dropped frame */
+            ct_detection d = walker(k * step, 20, 80);
+            n = test_step(t, k * step, &d, 1, out);
+        }
+        ck_assert_uint_eq(n, 1);
+        ck_assert_float_eq_tol(out[0].velocity_x, 80, 4);
+        ck_assert_float_eq_tol(out[0].velocity_y, 0, 2);
+        ck_assert_uint_eq(out[0].id, 1);
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
+/* Two people crossing paths with constant velocities keep their ids. */
+START_TEST(crossing_people_keep_ids)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    uint64_t left_id = 0, right_id = 0;
+    for (int k = 0; k < 40; k++) {
+        int64_t us = k * SEC / 10;
+        ct_detection d[2] = {test_det(100 + 10.0f * k, 100, 30, 80, 0.9f),
+                             test_det(500 - 10.0f * k, 130, 30, 80, 0.9f)};
+        size_t n = test_step(t, us, d, 2, out);
+        for (size_t i = 0; i < n; i++) {
+            if (out[i].detection_index == 0) {
+                if (!left_id) left_id = out[i].id;
+                ck_assert_uint_eq(out[i].id, left_id);
+            } else if (out[i].detection_index == 1) {
+                if (!right_id) right_id = out[i].id;
+                ck_assert_uint_eq(out[i].id, right_id);
+            }
+        }
+    }
+    ck_assert_uint_ne(left_id, right_id);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Low-score detections only continue confirmed tracks; they never start one. */
+START_TEST(low_scores_continue_but_do_not_start)
+{
+    ct_config cfg = test_config();
+    cfg.report_lost_time = 0;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    ct_detection weak = test_det(300, 100, 30, 80, (cfg.low_score + cfg.high_score) / 2);
+    for (int k = 0; k < 5; k++)
+        ck_assert_uint_eq(test_step(t, k * SEC / 10, &weak, 1, out), 0);
+    ct_detection strong = test_det(50, 100, 30, 80, 0.95f);
+    for (int k = 5; k < 10; k++)
+        test_step(t, k * SEC / 10, &strong, 1, out);
+    strong.score = weak.score;
+    ck_assert_uint_eq(test_step(t, 10 * SEC / 10, &strong, 1, out), 1);
+    ck_assert_int_eq(out[0].state, CT_TRACK_CONFIRMED);
+    ck_assert_float_eq_tol(out[0].confidence, weak.score, 1e-6);
+    /* Below low_score: ignored, the track is lost. */
+    strong.score = cfg.low_score / 2;
+    ck_assert_uint_eq(test_step(t, 11 * SEC / 10, &strong, 1, out), 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+START_TEST(clipping_and_image_exit)
+{
+    ct_config cfg = test_config();
+    cfg.clip_boxes = 1;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    ct_detection d = test_det(-10, 100, 30, 80, 0.9f);
+    ct_frame f = test_frame(0, 640, 480);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_OK);
+    size_t n = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 64, sizeof out[0], &n), CT_OK);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_float_eq_tol(out[0].left, 0, 1e-4);
+    ck_assert_float_eq_tol(out[0].width, 20, 1e-4);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+START_TEST(max_tracks_bounds_live_tracks)
+{
+    ct_config cfg = test_config();
+    cfg.max_tracks = 3;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    ct_detection d[5];
+    for (int i = 0; i < 5; i++)
+        d[i] = test_det(100.0f * i, 100, 30, 80, 0.9f);
+    ck_assert_uint_eq(test_step(t, 0, d, 5, out), 3);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+static Suite *lifecycle_suite(void)
+{
+    Suite *s = suite_create("lifecycle");
+    TCase *tc = tcase_create("lifecycle");
+    tcase_add_test(tc, tentative_tracks_are_not_reported);
+    tcase_add_test(tc, first_step_confirms);
+    tcase_add_test(tc, track_survives_a_gap);
+    tcase_add_test(tc, lost_track_is_removed_and_ids_are_not_reused);
+    tcase_add_test(tc, velocity_uses_time);
+    tcase_add_test(tc, crossing_people_keep_ids);
+    tcase_add_test(tc, low_scores_continue_but_do_not_start);
+    tcase_add_test(tc, clipping_and_image_exit);
+    tcase_add_test(tc, max_tracks_bounds_live_tracks);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(lifecycle_suite());
+}

@@ -1,0 +1,169 @@
+#!/bin/bash
+# ct-track's command-line behaviour: inputs, outputs and every bad input's
+# message and exit status. Uses the real TUD-Campus video and detections.
+#   test_cli.sh CT_TRACK DATA_DIR
+set -u
+ct=$1
+data=$2
+tud=$data/TUD-Campus
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+ok() { passed=$((passed + 1)); echo "ok   $1"; }
+bad() { failed=$((failed + 1)); echo "FAIL $1: $2"; }
+
+# expect NAME STATUS STDERR_SUBSTRING -- COMMAND...
+expect() {
+    local name=$1 want=$2 needle=$3
+    shift 4
+    "$@" > "$tmp/out" 2> "$tmp/err"
+    local got=$?
+    if [ "$got" != "$want" ]; then
+        bad "$name" "exit $got, want $want; stderr: $(head -c 300 "$tmp/err")"
+    elif [ -n "$needle" ] && ! grep -qF -- "$needle" "$tmp/err"; then
+        bad "$name" "stderr lacks '$needle': $(head -c 300 "$tmp/err")"
+    else
+        ok "$name"
+    fi
+}
+
+same() { # NAME FILE_A FILE_B
+    if cmp -s "$2" "$3"; then ok "$1"; else bad "$1" "$2 and $3 differ"; fi
+}
+
+# --- inputs that work ------------------------------------------------------
+expect "help" 0 "" -- "$ct" --help
+grep -q "lost_lifetime" "$tmp/out" && ok "help lists parameters" || bad "help lists parameters" "no lost_lifetime"
+expect "version" 0 "" -- "$ct" --version
+grep -q "^ct-track [0-9]*\.[0-9]*\.[0-9]*$" "$tmp/out" && ok "version format" || bad "version format" "$(cat "$tmp/out")"
+
+expect "detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -o "$tmp/detonly.txt"
+lines=$(wc -l < "$tmp/detonly.txt")
+[ "$lines" -gt 200 ] && ok "detections only writes tracks ($lines lines)" || bad "detections only writes tracks" "$lines lines"
+if awk -F, 'NF != 10 || $1 < 1 || $1 > 71 || $2 < 1 || $5 <= 0 || $6 <= 0 || $8 != -1 {exit 1}' "$tmp/detonly.txt"; then
+    ok "MOTChallenge format"
+else
+    bad "MOTChallenge format" "$(head -3 "$tmp/detonly.txt")"
+fi
+expect "standard output" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480
+same "standard output equals -o" "$tmp/out" "$tmp/detonly.txt"
+
+# Real frames through ffmpeg: a Y4M file, standard input, raw I420, NV12, grey.
+if ! command -v ffmpeg > /dev/null; then
+    bad "ffmpeg" "not installed (tools/install-deps.sh installs it)"
+else
+    ffmpeg -v error -i "$tud/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/tud.y4m"
+    ffmpeg -v error -i "$tud/video.mp4" -f rawvideo -pix_fmt yuv420p "$tmp/tud.i420"
+    ffmpeg -v error -i "$tud/video.mp4" -f rawvideo -pix_fmt nv12 "$tmp/tud.nv12"
+    ffmpeg -v error -i "$tud/video.mp4" -f rawvideo -pix_fmt gray "$tmp/tud.gray"
+    ffmpeg -v error -i "$tud/video.mp4" -f yuv4mpegpipe -pix_fmt gray "$tmp/tud-mono.y4m"
+    head -c 10 "$tmp/tud.y4m" | grep -q "YUV4MPEG2" && ok "ffmpeg wrote Y4M" || bad "ffmpeg wrote Y4M" "no header"
+
+    # The video has 71 frames at 25 fps like the detections, so every input
+    # form gives the tracks of the detections-only run.
+    expect "y4m file" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o "$tmp/y4m.txt" "$tmp/tud.y4m"
+    same "y4m file tracks" "$tmp/y4m.txt" "$tmp/detonly.txt"
+    "$ct" -q -d "$tud/det/det.txt" - < "$tmp/tud.y4m" > "$tmp/stdin.txt" 2> "$tmp/err" \
+        && same "y4m on standard input" "$tmp/stdin.txt" "$tmp/detonly.txt" \
+        || bad "y4m on standard input" "$(cat "$tmp/err")"
+    ffmpeg -v error -i "$tud/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p - \
+        | "$ct" -q -d "$tud/det/det.txt" - > "$tmp/pipe.txt" 2> "$tmp/err" \
+        && same "ffmpeg pipe" "$tmp/pipe.txt" "$tmp/detonly.txt" \
+        || bad "ffmpeg pipe" "$(cat "$tmp/err")"
+    expect "raw i420" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -o "$tmp/i420.txt" "$tmp/tud.i420"
+    same "raw i420 tracks" "$tmp/i420.txt" "$tmp/detonly.txt"
+    expect "raw nv12" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -f nv12 -o "$tmp/nv12.txt" "$tmp/tud.nv12"
+    same "raw nv12 tracks" "$tmp/nv12.txt" "$tmp/detonly.txt"
+    expect "raw gray" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -f gray -o "$tmp/gray.txt" "$tmp/tud.gray"
+    same "raw gray tracks" "$tmp/gray.txt" "$tmp/detonly.txt"
+    expect "y4m Cmono" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o "$tmp/mono.txt" "$tmp/tud-mono.y4m"
+    same "y4m Cmono tracks" "$tmp/mono.txt" "$tmp/detonly.txt"
+    expect "raw on standard input" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -s 640x480 - < '$tmp/tud.i420' > '$tmp/rawstdin.txt'"
+    same "raw on standard input tracks" "$tmp/rawstdin.txt" "$tmp/detonly.txt"
+    expect "--no-pixels" 0 "" -- "$ct" -q --no-pixels -d "$tud/det/det.txt" -o "$tmp/nopix.txt" "$tmp/tud.y4m"
+    same "--no-pixels tracks" "$tmp/nopix.txt" "$tmp/detonly.txt"
+
+    # The rate: the Y4M header's 25 fps equals --fps 25; --fps wins over it.
+    expect "--fps equal to the header" 0 "" -- "$ct" -q -r 25 -d "$tud/det/det.txt" -o "$tmp/r25.txt" "$tmp/tud.y4m"
+    same "--fps equal to the header tracks" "$tmp/r25.txt" "$tmp/y4m.txt"
+    expect "--fps over the header" 0 "" -- "$ct" -q -r 5 -d "$tud/det/det.txt" -o "$tmp/r5.txt" "$tmp/tud.y4m"
+    if cmp -s "$tmp/r5.txt" "$tmp/y4m.txt"; then bad "--fps changes the timing" "same tracks"; else ok "--fps changes the timing"; fi
+
+    # Bad video inputs.
+    head -c $((640 * 480 * 3 / 2 * 3 + 1000)) "$tmp/tud.i420" > "$tmp/cut.i420"
+    expect "size does not divide the file" 1 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -s 640x480 "$tmp/cut.i420"
+    expect "wrong --size" 1 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -s 640x481 "$tmp/tud.i420"
+    expect "truncated last frame on standard input" 1 "truncated frame 4" -- sh -c "'$ct' -d '$tud/det/det.txt' -s 640x480 - < '$tmp/cut.i420'"
+    head -c $(( $(stat -c %s "$tmp/tud.y4m") - 5000 )) "$tmp/tud.y4m" > "$tmp/cut.y4m"
+    expect "truncated last y4m frame" 1 "truncated frame 71" -- "$ct" -d "$tud/det/det.txt" "$tmp/cut.y4m"
+    printf 'YUV4MPEG2 W640 H480 F25:1 C420jpeg\nFRAMX\n' > "$tmp/badframe.y4m"
+    expect "bad y4m frame header" 1 "bad Y4M frame header" -- "$ct" -d "$tud/det/det.txt" "$tmp/badframe.y4m"
+    expect "raw without --size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" "$tmp/tud.i420"
+    expect "progress" 0 "frames/s" -- "$ct" --progress -d "$tud/det/det.txt" -o /dev/null "$tmp/tud.y4m"
+fi
+
+printf 'YUV4MPEG2 H480 F25:1\n' > "$tmp/nowidth.y4m"
+expect "y4m without width" 1 "bad Y4M header" -- "$ct" -d "$tud/det/det.txt" "$tmp/nowidth.y4m"
+printf 'YUV4MPEG2 W640 H480 F25:1 C422\nFRAME\n' > "$tmp/c422.y4m"
+expect "y4m 4:2:2" 1 "unsupported Y4M colour space '422'" -- "$ct" -d "$tud/det/det.txt" "$tmp/c422.y4m"
+printf 'YUV4MPEG2 W640 H480 F0:0\n' > "$tmp/rate.y4m"
+expect "y4m bad rate" 1 "frame rate" -- "$ct" -d "$tud/det/det.txt" "$tmp/rate.y4m"
+printf 'YUV4MPEG2 W99999 H480\n' > "$tmp/huge.y4m"
+expect "y4m absurd size" 1 "absurd" -- "$ct" -d "$tud/det/det.txt" "$tmp/huge.y4m"
+printf 'YUV4MPEG2 W640 H480 Q7\n' > "$tmp/field.y4m"
+expect "y4m unknown field" 1 "unknown field" -- "$ct" -d "$tud/det/det.txt" "$tmp/field.y4m"
+printf 'YUV4MPEG2 W2 H2 F25:1 Ip A1:1 C420mpeg2 XYSCSS=420MPEG2 XCOLORRANGE=FULL\nFRAME\nabcdef' > "$tmp/tiny.y4m"
+expect "y4m X fields and C420mpeg2" 0 "" -- "$ct" -d "$tud/det/det.txt" -o "$tmp/tiny.txt" "$tmp/tiny.y4m"
+expect "missing input" 1 "cannot open" -- "$ct" -d "$tud/det/det.txt" "$tmp/nothing.y4m"
+expect "directory input" 1 "directory" -- "$ct" -d "$tud/det/det.txt" "$tmp"
+expect "empty input" 1 "--size" -- "$ct" -d "$tud/det/det.txt" /dev/null
+
+# --- detections ------------------------------------------------------------
+expect "missing detections" 1 "cannot open detections" -- "$ct" -d "$tmp/none.txt" -s 640x480
+printf '1,-1,10,10,20,40,0.9,-1,-1,-1\n2,-1,10,10,20\n' > "$tmp/short.txt"
+expect "short detection line" 1 "short.txt:2: malformed" -- "$ct" -d "$tmp/short.txt" -s 640x480
+printf '1,-1,10,10,20,40,0.9\n1,-1,abc,10,20,40,0.9\n' > "$tmp/word.txt"
+expect "non-numeric field" 1 "word.txt:2: malformed" -- "$ct" -d "$tmp/word.txt" -s 640x480
+printf '0,-1,10,10,20,40,0.9\n' > "$tmp/zero.txt"
+expect "frame 0" 1 "zero.txt:1: frame 0" -- "$ct" -d "$tmp/zero.txt" -s 640x480
+printf '1.5,-1,10,10,20,40,0.9\n' > "$tmp/half.txt"
+expect "fractional frame" 1 "half.txt:1: frame 1.5" -- "$ct" -d "$tmp/half.txt" -s 640x480
+printf '1,-1,10,10,nan,40,0.9\n' > "$tmp/nan.txt"
+expect "NaN box" 1 "nan.txt:1: field 5" -- "$ct" -d "$tmp/nan.txt" -s 640x480
+printf '1,-1,10,10,-20,40,0.9\n' > "$tmp/neg.txt"
+expect "negative width" 1 "neg.txt:1: box size" -- "$ct" -d "$tmp/neg.txt" -s 640x480
+printf '1,-1,10,10,20,40,inf\n' > "$tmp/inf.txt"
+expect "infinite score" 1 "inf.txt:1: field 7" -- "$ct" -d "$tmp/inf.txt" -s 640x480
+printf '# a comment\n\n3,-1,10,10,20,40,0.9\n1,-1,10,10,20,40,0.9\n2,-1,11,10,20,40,0.9\n' > "$tmp/unordered.txt"
+expect "unordered lines and comments" 0 "" -- "$ct" -q -d "$tmp/unordered.txt"
+[ "$(cut -d, -f1 "$tmp/out" | tr '\n' ' ')" = "1 2 3 " ] && ok "unordered lines sorted by frame" || bad "unordered lines sorted by frame" "$(cat "$tmp/out")"
+: > "$tmp/empty.txt"
+expect "empty detections" 0 "" -- "$ct" -q -d "$tmp/empty.txt" -s 640x480
+[ ! -s "$tmp/out" ] && ok "empty detections give no tracks" || bad "empty detections give no tracks" "output not empty"
+
+# --- options ---------------------------------------------------------------
+expect "no arguments" 2 "usage" -- "$ct"
+expect "pixels only is not there yet" 2 "--detections" -- "$ct" "$tud/video.mp4"
+expect "two inputs" 2 "one INPUT" -- "$ct" -d "$tud/det/det.txt" a b
+expect "size 0x0" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 0x0
+expect "absurd size" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 100000x10
+expect "size garbage" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 640
+expect "bad format" 2 "--format" -- "$ct" -d "$tud/det/det.txt" -f yuyv
+expect "bad fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r 0
+expect "nan fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r nan
+expect "unknown parameter" 2 "unknown parameter 'bogus'" -- "$ct" -d "$tud/det/det.txt" -p bogus=1
+expect "parameter without value" 2 "NAME=VALUE" -- "$ct" -d "$tud/det/det.txt" -p min_hits
+expect "parameter not a number" 2 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -p min_hits=2.5
+expect "parameter out of range" 2 "config.lost_lifetime" -- "$ct" -d "$tud/det/det.txt" -p lost_lifetime=-3
+expect "parameter NaN" 2 "high_score: 'nan' is not a number" -- "$ct" -d "$tud/det/det.txt" -p high_score=nan
+expect "parameter set" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -p min_hits=1 -p report_lost_time=0
+if cmp -s "$tmp/out" "$tmp/detonly.txt"; then bad "parameters change the result" "same tracks"; else ok "parameters change the result"; fi
+expect "unwritable output" 1 "cannot write" -- "$ct" -d "$tud/det/det.txt" -o "$tmp/no/such/dir/out.txt"
+if [ -w /dev/full ]; then
+    expect "full disk" 1 "error writing" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/full
+fi
+expect "detections beyond the video" 0 "detections go to frame 71" -- "$ct" -q -d "$tud/det/det.txt" "$tmp/tiny.y4m"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
