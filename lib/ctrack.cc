@@ -148,7 +148,6 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
                             "frame.timestamp_us: %lld does not increase (the last was %lld)",
                             (long long)f.timestamp_us, (long long)e.last_time());
     return guarded(tracker, [&] {
-        e.reserve(n);
         e.step(f.timestamp_us, ctrack::ImageSize{f.width, f.height}, dets, n);
         return CT_OK;
     });

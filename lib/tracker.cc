@@ -42,19 +42,6 @@ static Box det_box(const ct_detection &d)
 
 Engine::Engine(const ct_config &cfg) : cfg_(cfg) {}
 
-void Engine::reserve(size_t n)
-{
-    size_t tracks = tracks_.size() + n;
-    tracks_.reserve(tracks);
-    reported_.reserve(tracks);
-    cost_.reserve(tracks * n);
-    row_to_col_.reserve(tracks);
-    pool_tracks_.reserve(tracks);
-    pool_dets_.reserve(n);
-    low_dets_.reserve(n);
-    det_used_.reserve(n);
-}
-
 void Engine::reset()
 {
     tracks_.clear();
@@ -151,6 +138,25 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
 }
 
 void Engine::step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n)
+{
+    saved_tracks_ = tracks_;
+    saved_reported_ = reported_;
+    const uint64_t next_id = next_id_;
+    const int64_t last_us = last_us_;
+    const bool has_time = has_time_;
+    try {
+        step_unguarded(t_us, image, dets, n);
+    } catch (...) {
+        tracks_ = saved_tracks_;
+        reported_ = saved_reported_;
+        next_id_ = next_id;
+        last_us_ = last_us;
+        has_time_ = has_time;
+        throw;
+    }
+}
+
+void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n)
 {
     const bool first = !has_time_;
     const double dt = first ? 0.0 : (double)(t_us - last_us_) * 1e-6;

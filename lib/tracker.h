@@ -40,11 +40,8 @@ class Engine {
 public:
     explicit Engine(const ct_config &cfg);
 
-    // Reserves what a step with n detections needs, so that step() itself
-    // does not allocate: an allocation failure then happens before any state
-    // changes. Throws std::bad_alloc.
-    void reserve(size_t n);
-    // One step; timestamps are checked by the caller.
+    // One step; timestamps are checked by the caller. If it throws, the
+    // engine is as it was before the call.
     void step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n);
     void reset();
 
@@ -53,6 +50,7 @@ public:
     int64_t last_time() const { return last_us_; }
 
 private:
+    void step_unguarded(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n);
     void predict(double dt);
     void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
                const ct_detection *dets, double min_iou);
@@ -66,6 +64,12 @@ private:
     uint64_t next_id_ = 1;
     int64_t last_us_ = 0;
     bool has_time_ = false;
+
+    // The state before the step in progress, restored if it throws (the
+    // restoring copy fits in capacity the vectors already have, so it cannot
+    // throw). Kept as members so that steady state does not allocate.
+    std::vector<Track> saved_tracks_;
+    std::vector<ct_track> saved_reported_;
 
     // Scratch reused from step to step.
     Assigner assigner_;

@@ -6,6 +6,10 @@
 
 #include "ctrack/ctrack.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct ct_detfile {
     ct_detection *dets; /* sorted by frame, file order within a frame */
     int *frames;        /* 1-based frame of each detection */
@@ -21,5 +25,9 @@ int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len
 const ct_detection *ct_detfile_frame(ct_detfile *df, int frame, size_t *n);
 
 void ct_detfile_free(ct_detfile *df);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,0 +1,166 @@
+// Allocation failures inside the library become CT_ERROR_OUT_OF_MEMORY, and a
+// failed feed leaves the tracker as it was. operator new is replaced here to
+// fail on demand; the library is linked statically so it uses this one.
+#include <check.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#include "ctrack/ctrack.h"
+#include "detfile.h"
+
+static const char *data_dir;
+static long fail_countdown = -1; // the allocation that fails; -1: none
+static long allocations = 0;
+
+void *operator new(std::size_t n)
+{
+    allocations++;
+    if (fail_countdown == 0) {
+        fail_countdown = -1;
+        throw std::bad_alloc();
+    }
+    if (fail_countdown > 0)
+        fail_countdown--;
+    void *p = std::malloc(n ? n : 1);
+    if (!p)
+        throw std::bad_alloc();
+    return p;
+}
+void *operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void *p) noexcept { std::free(p); }
+void operator delete[](void *p) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+
+static std::vector<ct_track> tracks_of(ct_tracker *t)
+{
+    std::vector<ct_track> out(512);
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out.data(), out.size(), sizeof(ct_track), &count), CT_OK);
+    out.resize(count);
+    return out;
+}
+
+static void assert_equal(const std::vector<ct_track> &a, const std::vector<ct_track> &b)
+{
+    ck_assert_uint_eq(a.size(), b.size());
+    if (!a.empty())
+        ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(ct_track)), 0);
+}
+
+START_TEST(create_out_of_memory)
+{
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    ct_tracker *t = reinterpret_cast<ct_tracker *>(&cfg);
+    fail_countdown = 0;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_ERROR_OUT_OF_MEMORY);
+    ck_assert_ptr_null(t);
+    fail_countdown = -1;
+}
+END_TEST
+
+// Every frame of PETS09-S2L1 is first fed with an allocation failure armed
+// (the first, second, ... allocation of the call). A refused feed must
+// change nothing; the retry then must give what an undisturbed tracker gives.
+START_TEST(feed_out_of_memory_changes_nothing)
+{
+    char path[1024], err[512];
+    std::snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data_dir);
+    ct_detfile df;
+    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    ct_tracker *ref = nullptr, *t = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
+    int refused = 0;
+    for (int k = 1; k <= df.max_frame; k++) {
+        ct_frame f;
+        ct_frame_default(&f, sizeof f);
+        f.timestamp_us = (int64_t)((k - 1) * 1e6 / 7);
+        size_t n;
+        const ct_detection *d = ct_detfile_frame(&df, k, &n);
+        ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
+
+        std::vector<ct_track> before = tracks_of(t);
+        fail_countdown = k % 4;
+        int st = ct_tracker_feed(t, &f, d, n);
+        fail_countdown = -1;
+        if (st != CT_OK) {
+            ck_assert_int_eq(st, CT_ERROR_OUT_OF_MEMORY);
+            ck_assert_str_eq(ct_tracker_last_error(t), "out of memory");
+            assert_equal(tracks_of(t), before);
+            refused++;
+            ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
+        }
+        assert_equal(tracks_of(t), tracks_of(ref));
+    }
+    // Growth allocates early on; steady state does not, so only some feeds fail.
+    ck_assert_int_gt(refused, 0);
+    ct_tracker_destroy(ref);
+    ct_tracker_destroy(t);
+    ct_detfile_free(&df);
+}
+END_TEST
+
+// In steady state, a feed makes no heap allocation at all.
+START_TEST(steady_state_does_not_allocate)
+{
+    char path[1024], err[512];
+    std::snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data_dir);
+    ct_detfile df;
+    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    ct_tracker *t = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
+    ct_track out[512];
+    long in_last_half = 0;
+    // Twice through the sequence: the second pass meets no bigger crowd than
+    // the first, so every buffer already has its size.
+    for (int pass = 0; pass < 2; pass++) {
+        df.cursor = 0;
+        for (int k = 1; k <= df.max_frame; k++) {
+            ct_frame f;
+            ct_frame_default(&f, sizeof f);
+            f.timestamp_us = (int64_t)((pass * df.max_frame + k - 1) * 1e6 / 7);
+            size_t n, count;
+            const ct_detection *d = ct_detfile_frame(&df, k, &n);
+            long a0 = allocations;
+            ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
+            ck_assert_int_eq(ct_tracker_get_tracks(t, out, 512, sizeof out[0], &count), CT_OK);
+            if (pass == 1)
+                in_last_half += allocations - a0;
+        }
+    }
+    ck_assert_int_eq(in_last_half, 0);
+    ct_tracker_destroy(t);
+    ct_detfile_free(&df);
+}
+END_TEST
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: check_oom DATA_DIR\n");
+        return 2;
+    }
+    data_dir = argv[1];
+    Suite *s = suite_create("oom");
+    TCase *tc = tcase_create("oom");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, create_out_of_memory);
+    tcase_add_test(tc, feed_out_of_memory_changes_nothing);
+    tcase_add_test(tc, steady_state_does_not_allocate);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
