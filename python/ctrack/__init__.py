@@ -1,0 +1,323 @@
+"""ctrack for Python: multi-target pedestrian tracking through libctrack.
+
+    import ctrack
+    with ctrack.Tracker(fps=7) as t:
+        for frame, dets in video:          # frame: numpy uint8, dets: (N, 5)
+            tracks = t.feed(frame, dets)   # numpy structured array
+            for tr in tracks:
+                print(tr["id"], tr["left"], tr["top"], tr["width"], tr["height"])
+
+The library is found, in this order: the `library` argument of load(), the
+CTRACK_LIBRARY environment variable, a libctrack beside this package, the
+build folder of a source checkout (after `make`), then the system's.
+"""
+import ctypes
+import ctypes.util
+import math
+import os
+
+import numpy as np
+
+from . import _abi
+from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
+                   SOURCE_DETECTIONS, SOURCE_PIXELS)
+
+__all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
+           "TRACK_DTYPE", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+
+_lib = None
+
+#: The numpy dtype of a track: the fields of ct_track.
+TRACK_DTYPE = np.dtype(_abi.Track)
+_DET_DTYPE = np.dtype(_abi.Detection)
+_CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
+
+
+class CtrackError(Exception):
+    """A call into libctrack failed; `status` is its ct_status code."""
+
+    def __init__(self, status, message):
+        super().__init__(message)
+        self.status = status
+
+
+def _candidates(library):
+    if library:
+        yield library
+        return
+    env = os.environ.get("CTRACK_LIBRARY")
+    if env:
+        yield env
+        return
+    here = os.path.dirname(os.path.abspath(__file__))
+    name = "libctrack.so.%d" % _abi.ABI_VERSION
+    yield os.path.join(here, name)
+    yield os.path.join(here, "..", "..", "build", "lib", name)
+    found = ctypes.util.find_library("ctrack")
+    yield found or name
+
+
+def load(library=None):
+    """Loads libctrack (once) and returns the ctypes handle. Refuses a
+    library whose ABI major differs from this package's."""
+    global _lib
+    if _lib is not None and library is None:
+        return _lib
+    errors = []
+    for path in _candidates(library):
+        if os.path.sep in path and not os.path.exists(path):
+            errors.append("%s: no such file" % path)
+            continue
+        try:
+            lib = ctypes.CDLL(path)
+        except OSError as e:
+            errors.append(str(e))
+            continue
+        try:
+            abi = lib.ct_abi_version()
+        except AttributeError:
+            raise ImportError("%s is not libctrack (no ct_abi_version)" % path)
+        if abi != _abi.ABI_VERSION:
+            raise ImportError("%s has ABI %d; this ctrack package needs ABI %d"
+                              % (path, abi, _abi.ABI_VERSION))
+        _abi.declare(lib)
+        _lib = lib
+        return lib
+    raise ImportError("libctrack not found (run `make`, or set CTRACK_LIBRARY): "
+                      + "; ".join(errors))
+
+
+def version():
+    """The loaded library's version string, e.g. '0.1.0'."""
+    return load().ct_version_string().decode()
+
+
+def version_number():
+    return load().ct_version_number()
+
+
+def abi_version():
+    return load().ct_abi_version()
+
+
+def _status_error(lib, status, message):
+    return CtrackError(status, "%s: %s" % (lib.ct_status_str(status).decode(), message))
+
+
+def bgr_to_i420(image):
+    """Converts an HxWx3 uint8 BGR image to an (H*3/2, W) I420 array (BT.601,
+    limited range, chroma averaged over 2x2 blocks: OpenCV's
+    COLOR_BGR2YUV_I420 up to rounding). Odd sizes are padded to even."""
+    img = np.asarray(image)
+    h, w = img.shape[:2]
+    if h % 2 or w % 2:
+        img = np.pad(img, ((0, h % 2), (0, w % 2), (0, 0)), mode="edge")
+    b, g, r = (img[..., i].astype(np.int32) for i in range(3))
+    y = ((66 * r + 129 * g + 25 * b + 128) >> 8) + 16
+    u = ((-38 * r - 74 * g + 112 * b + 128) >> 8) + 128
+    v = ((112 * r - 94 * g - 18 * b + 128) >> 8) + 128
+    H, W = y.shape
+
+    def sub(c):
+        return ((c[0::2, 0::2] + c[1::2, 0::2] + c[0::2, 1::2] + c[1::2, 1::2] + 2) >> 2)
+    out = np.empty((H * 3 // 2, W), np.uint8)
+    out[:H] = np.clip(y, 0, 255)
+    out[H:].reshape(-1)[: (H // 2) * (W // 2)] = np.clip(sub(u), 0, 255).reshape(-1)
+    out[H:].reshape(-1)[(H // 2) * (W // 2):] = np.clip(sub(v), 0, 255).reshape(-1)
+    return out
+
+
+class Tracker:
+    """One tracker. Keyword parameters are the fields of ct_config
+    (high_score, min_hits, lost_lifetime, ...; see docs/API.md), plus `fps`
+    (default 25), the rate assumed when feed() gets no timestamp."""
+
+    def __init__(self, fps=25.0, library=None, **params):
+        self._lib = load(library)
+        if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
+            raise ValueError("fps: %r is not a positive rate" % (fps,))
+        self.fps = float(fps)
+        cfg = _abi.Config()
+        self._lib.ct_config_default(ctypes.byref(cfg), ctypes.sizeof(cfg))
+        for name, value in params.items():
+            if name not in _CONFIG_FIELDS:
+                raise TypeError("Tracker: unknown parameter %r (known: %s)"
+                                % (name, ", ".join(_CONFIG_FIELDS + ["fps"])))
+            try:
+                setattr(cfg, name, value)
+            except TypeError:
+                raise TypeError("Tracker: %s=%r has the wrong type" % (name, value))
+        self.config = {name: getattr(cfg, name) for name in _CONFIG_FIELDS}
+        msg = ctypes.create_string_buffer(512)
+        st = self._lib.ct_config_check(ctypes.byref(cfg), msg, len(msg))
+        if st != _abi.OK:
+            raise _status_error(self._lib, st, msg.value.decode())
+        handle = ctypes.c_void_p()
+        st = self._lib.ct_tracker_create(ctypes.byref(cfg), ctypes.byref(handle))
+        if st != _abi.OK:
+            raise _status_error(self._lib, st, "ct_tracker_create failed")
+        self._t = handle
+        self._last_ts = None
+        self._size = (0, 0)
+        self._out = (_abi.Track * 64)()
+
+    # -- lifetime ----------------------------------------------------------
+    def close(self):
+        """Frees the tracker; feed() then raises. Idempotent."""
+        if getattr(self, "_t", None):
+            self._lib.ct_tracker_destroy(self._t)
+            self._t = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        self.close()
+
+    def _handle(self):
+        if not self._t:
+            raise ValueError("the tracker is closed")
+        return self._t
+
+    def _check(self, st):
+        if st != _abi.OK:
+            raise _status_error(self._lib, st, self._lib.ct_tracker_last_error(self._t).decode())
+
+    # -- tracking ----------------------------------------------------------
+    def reset(self):
+        """Forgets every track and the time; ids keep increasing."""
+        self._check(self._lib.ct_tracker_reset(self._handle()))
+        self._last_ts = None
+
+    def feed(self, frame=None, detections=None, timestamp=None, format=None):
+        """Runs one step and returns the reported tracks (TRACK_DTYPE).
+
+        frame: None (no pixels), an HxW uint8 grey image, an (H*3/2)xW uint8
+            array with format='i420' or 'nv12', or an HxWx3 uint8 BGR image
+            (converted to I420 once, see bgr_to_i420).
+        detections: None or an (N, 5) / (N, 6) array of
+            [left, top, width, height, score(, class)] in pixels.
+        timestamp: seconds; None means one frame period (1 / fps) after the
+            last.
+        """
+        t = self._handle()
+        f = _abi.Frame()
+        self._lib.ct_frame_default(ctypes.byref(f), ctypes.sizeof(f))
+        keep = self._fill_frame(f, frame, format)
+        dets = self._detections(detections)
+        if timestamp is None:
+            ts = 0.0 if self._last_ts is None else self._last_ts + 1.0 / self.fps
+        else:
+            ts = float(timestamp)
+            if not math.isfinite(ts):
+                raise ValueError("timestamp: %r is not finite" % (timestamp,))
+        f.timestamp_us = int(round(ts * 1e6))
+        ptr = dets.ctypes.data if len(dets) else None
+        self._check(self._lib.ct_tracker_feed(t, ctypes.byref(f), ptr, len(dets)))
+        del keep
+        self._last_ts = ts
+        if f.format != _abi.FORMAT_NONE:
+            self._size = (f.width, f.height)
+        return self.tracks()
+
+    def tracks(self):
+        """The tracks reported for the last step (a copy)."""
+        t = self._handle()
+        count = ctypes.c_size_t()
+        size = ctypes.sizeof(_abi.Track)
+        st = self._lib.ct_tracker_get_tracks(t, self._out, len(self._out), size,
+                                             ctypes.byref(count))
+        if st == _abi.ERROR_BUFFER_TOO_SMALL:
+            self._out = (_abi.Track * (2 * count.value))()
+            st = self._lib.ct_tracker_get_tracks(t, self._out, len(self._out), size,
+                                                 ctypes.byref(count))
+        self._check(st)
+        return np.frombuffer(self._out, dtype=TRACK_DTYPE, count=count.value).copy()
+
+    # -- conversions -------------------------------------------------------
+    def _fill_frame(self, f, frame, format):
+        """Fills f's planes from a numpy frame; returns the arrays that must
+        stay alive until the call returns."""
+        if frame is None:
+            if format is not None:
+                raise ValueError("format=%r given without a frame" % (format,))
+            f.format = _abi.FORMAT_NONE
+            f.width, f.height = self._size
+            return None
+        a = np.asarray(frame)
+        if a.dtype != np.uint8:
+            raise ValueError("frame: dtype %s; ctrack reads uint8 pixels" % a.dtype)
+        if a.ndim == 3:
+            if a.shape[2] != 3 or format is not None:
+                raise ValueError("frame: a 3-D frame must be HxWx3 BGR (no format); got shape %s"
+                                 % (a.shape,))
+            h, w = a.shape[:2]
+            a = bgr_to_i420(a)
+            fmt = "i420"
+            h2 = (h + 1) // 2 * 2
+            w2 = (w + 1) // 2 * 2
+            return self._planes(f, a, fmt, w2, h2, crop=(w, h))
+        if a.ndim != 2:
+            raise ValueError("frame: shape %s is not HxW, (H*3/2)xW or HxWx3" % (a.shape,))
+        if format is None or format == "gray":
+            return self._planes(f, a, "gray", a.shape[1], a.shape[0])
+        if format not in ("i420", "nv12"):
+            raise ValueError("format: %r is not 'i420', 'nv12' or 'gray'" % (format,))
+        if a.shape[0] % 3 != 0:
+            raise ValueError("frame: %d rows is not H*3/2 for an %s frame" % (a.shape[0], format))
+        h = a.shape[0] * 2 // 3
+        if h % 2 or a.shape[1] % 2:
+            raise ValueError("frame: a packed %s array needs an even size, got %dx%d"
+                             % (format, a.shape[1], h))
+        return self._planes(f, a, format, a.shape[1], h)
+
+    @staticmethod
+    def _planes(f, a, fmt, w, h, crop=None):
+        if a.strides[1] != 1 or a.strides[0] < a.shape[1]:
+            a = np.ascontiguousarray(a)
+        stride = a.strides[0]
+        base = a.ctypes.data
+        f.width, f.height = crop if crop else (w, h)
+        f.planes[0] = base
+        f.strides[0] = stride
+        if fmt == "gray":
+            f.format = _abi.FORMAT_GRAY8
+            return a
+        if stride != w:
+            a = np.ascontiguousarray(a)
+            base, stride = a.ctypes.data, w
+            f.planes[0], f.strides[0] = base, stride
+        luma = w * h
+        if fmt == "i420":
+            f.format = _abi.FORMAT_I420
+            f.planes[1] = base + luma
+            f.planes[2] = base + luma + (w // 2) * (h // 2)
+            f.strides[1] = f.strides[2] = w // 2
+        else:
+            f.format = _abi.FORMAT_NV12
+            f.planes[1] = base + luma
+            f.strides[1] = w
+        return a
+
+    @staticmethod
+    def _detections(detections):
+        if detections is None:
+            return np.zeros(0, _DET_DTYPE)
+        d = np.asarray(detections, dtype=np.float64)
+        if d.size == 0:
+            return np.zeros(0, _DET_DTYPE)
+        if d.ndim != 2 or d.shape[1] not in (5, 6):
+            raise ValueError("detections: shape %s is not (N, 5) or (N, 6) "
+                             "[left, top, width, height, score(, class)]" % (d.shape,))
+        out = np.zeros(len(d), _DET_DTYPE)
+        for i, name in enumerate(("left", "top", "width", "height", "score")):
+            out[name] = d[:, i]
+        if d.shape[1] == 6:
+            cls = d[:, 5]
+            if not np.all(np.isfinite(cls)) or np.any(cls != np.round(cls)):
+                raise ValueError("detections: the class column must hold whole numbers")
+            out["class_id"] = cls.astype(np.int32)
+        return out

@@ -1,0 +1,122 @@
+"""ctypes mirrors of the structs in include/ctrack/ctrack.h (ABI 1).
+
+tests/python/test_abi.py checks their sizes and offsets against the C
+compiler's, so a change to the header that is not made here fails a test.
+"""
+import ctypes as C
+
+ABI_VERSION = 1
+
+OK = 0
+ERROR_INVALID_ARGUMENT = -1
+ERROR_OUT_OF_MEMORY = -2
+ERROR_UNSUPPORTED = -3
+ERROR_BUFFER_TOO_SMALL = -4
+ERROR_BAD_STATE = -5
+ERROR_INTERNAL = -6
+
+SOURCE_DETECTIONS = 0
+SOURCE_PIXELS = 1
+
+
+def fourcc(s):
+    return s[0] | (s[1] << 8) | (s[2] << 16) | (s[3] << 24)
+
+
+FORMAT_NONE = 0
+FORMAT_I420 = fourcc(b"I420")
+FORMAT_NV12 = fourcc(b"NV12")
+FORMAT_GRAY8 = fourcc(b"Y800")
+
+TRACK_TENTATIVE = 0
+TRACK_CONFIRMED = 1
+TRACK_LOST = 2
+
+
+class Config(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("source", C.c_int32),
+        ("high_score", C.c_float),
+        ("low_score", C.c_float),
+        ("match_iou", C.c_float),
+        ("low_match_iou", C.c_float),
+        ("tentative_match_iou", C.c_float),
+        ("min_hits", C.c_int32),
+        ("lost_lifetime", C.c_double),
+        ("report_lost_time", C.c_double),
+        ("motion_noise", C.c_float),
+        ("detection_noise", C.c_float),
+        ("clip_boxes", C.c_int32),
+        ("max_tracks", C.c_int32),
+    ]
+
+
+class Frame(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("format", C.c_uint32),
+        ("width", C.c_int32),
+        ("height", C.c_int32),
+        ("planes", C.c_void_p * 3),
+        ("strides", C.c_int32 * 3),
+        ("timestamp_us", C.c_int64),
+    ]
+
+
+class Detection(C.Structure):
+    _fields_ = [
+        ("left", C.c_float),
+        ("top", C.c_float),
+        ("width", C.c_float),
+        ("height", C.c_float),
+        ("score", C.c_float),
+        ("class_id", C.c_int32),
+    ]
+
+
+class Track(C.Structure):
+    _fields_ = [
+        ("id", C.c_uint64),
+        ("left", C.c_float),
+        ("top", C.c_float),
+        ("width", C.c_float),
+        ("height", C.c_float),
+        ("barycenter_x", C.c_float),
+        ("barycenter_y", C.c_float),
+        ("velocity_x", C.c_float),
+        ("velocity_y", C.c_float),
+        ("confidence", C.c_float),
+        ("state", C.c_int32),
+        ("age", C.c_int32),
+        ("hits", C.c_int32),
+        ("time_since_update", C.c_double),
+        ("detection_index", C.c_int32),
+        ("class_id", C.c_int32),
+    ]
+
+
+def declare(lib):
+    """Sets the argument and result types of every function of `lib`."""
+    P = C.POINTER
+    sig = {
+        "ct_status_str": (C.c_char_p, [C.c_int]),
+        "ct_version_string": (C.c_char_p, []),
+        "ct_version_number": (C.c_uint32, []),
+        "ct_abi_version": (C.c_uint32, []),
+        "ct_config_default": (C.c_int, [P(Config), C.c_size_t]),
+        "ct_config_check": (C.c_int, [P(Config), C.c_char_p, C.c_size_t]),
+        "ct_frame_default": (C.c_int, [P(Frame), C.c_size_t]),
+        "ct_tracker_create": (C.c_int, [P(Config), P(C.c_void_p)]),
+        "ct_tracker_destroy": (None, [C.c_void_p]),
+        "ct_tracker_feed": (C.c_int, [C.c_void_p, P(Frame), C.c_void_p, C.c_size_t]),
+        "ct_tracker_get_tracks": (C.c_int, [C.c_void_p, C.c_void_p, C.c_size_t, C.c_size_t,
+                                            P(C.c_size_t)]),
+        "ct_tracker_reset": (C.c_int, [C.c_void_p]),
+        "ct_tracker_last_error": (C.c_char_p, [C.c_void_p]),
+    }
+    for name, (res, args) in sig.items():
+        f = getattr(lib, name)
+        f.restype = res
+        f.argtypes = args
+    return lib

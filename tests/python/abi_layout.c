@@ -1,0 +1,39 @@
+/* Prints the layout of the public structs as JSON, for the Python binding's
+ * test that its ctypes mirrors match the compiler's. */
+#include <stddef.h>
+#include <stdio.h>
+
+#include "ctrack/ctrack.h"
+
+#define FIELD(T, f) printf("%s\"%s\": %zu", first++ ? ", " : "", #f, offsetof(T, f))
+
+int main(void)
+{
+    int first = 0;
+    printf("{\"Config\": {\"sizeof\": %zu, ", sizeof(ct_config));
+    FIELD(ct_config, size); FIELD(ct_config, source); FIELD(ct_config, high_score);
+    FIELD(ct_config, low_score); FIELD(ct_config, match_iou); FIELD(ct_config, low_match_iou);
+    FIELD(ct_config, tentative_match_iou); FIELD(ct_config, min_hits);
+    FIELD(ct_config, lost_lifetime); FIELD(ct_config, report_lost_time);
+    FIELD(ct_config, motion_noise); FIELD(ct_config, detection_noise);
+    FIELD(ct_config, clip_boxes); FIELD(ct_config, max_tracks);
+    first = 0;
+    printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
+    FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
+    FIELD(ct_frame, height); FIELD(ct_frame, planes); FIELD(ct_frame, strides);
+    FIELD(ct_frame, timestamp_us);
+    first = 0;
+    printf("}, \"Detection\": {\"sizeof\": %zu, ", sizeof(ct_detection));
+    FIELD(ct_detection, left); FIELD(ct_detection, top); FIELD(ct_detection, width);
+    FIELD(ct_detection, height); FIELD(ct_detection, score); FIELD(ct_detection, class_id);
+    first = 0;
+    printf("}, \"Track\": {\"sizeof\": %zu, ", sizeof(ct_track));
+    FIELD(ct_track, id); FIELD(ct_track, left); FIELD(ct_track, top); FIELD(ct_track, width);
+    FIELD(ct_track, height); FIELD(ct_track, barycenter_x); FIELD(ct_track, barycenter_y);
+    FIELD(ct_track, velocity_x); FIELD(ct_track, velocity_y); FIELD(ct_track, confidence);
+    FIELD(ct_track, state); FIELD(ct_track, age); FIELD(ct_track, hits);
+    FIELD(ct_track, time_since_update); FIELD(ct_track, detection_index);
+    FIELD(ct_track, class_id);
+    printf("}}\n");
+    return 0;
+}

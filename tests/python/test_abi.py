@@ -1,0 +1,25 @@
+"""The ctypes mirrors match the C compiler's layout of the public structs."""
+import ctypes
+import json
+import os
+import subprocess
+
+import pytest
+
+from ctrack import _abi
+
+
+@pytest.fixture(scope="module")
+def layout():
+    exe = os.environ.get("CTRACK_ABI_LAYOUT")
+    assert exe, "CTRACK_ABI_LAYOUT must name the abi_layout helper (meson test sets it)"
+    return json.loads(subprocess.run([exe], check=True, capture_output=True).stdout)
+
+
+@pytest.mark.parametrize("name", ["Config", "Frame", "Detection", "Track"])
+def test_struct_layout(layout, name):
+    cls = getattr(_abi, name)
+    want = layout[name]
+    assert ctypes.sizeof(cls) == want.pop("sizeof")
+    got = {f: getattr(cls, f).offset for f, _ in cls._fields_}
+    assert got == want

@@ -1,0 +1,167 @@
+"""The Python binding through the real shared library."""
+import configparser
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import ctrack
+from conftest import DATA
+
+
+def load_dets(seq):
+    d = np.loadtxt(os.path.join(DATA, seq, "det", "det.txt"), delimiter=",", ndmin=2)
+    return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
+
+
+def seqinfo(seq):
+    c = configparser.ConfigParser()
+    c.read(os.path.join(DATA, seq, "seqinfo.ini"))
+    s = c["Sequence"]
+    return int(s["seqLength"]), float(s["frameRate"]), int(s["imWidth"]), int(s["imHeight"])
+
+
+def test_version():
+    assert ctrack.version().count(".") == 2
+    assert ctrack.abi_version() == 1
+    major, minor, patch = map(int, ctrack.version().split("."))
+    assert ctrack.version_number() == (major << 16) | (minor << 8) | patch
+
+
+def test_track_fields_are_those_of_ct_track():
+    for name in ("id", "left", "top", "width", "height", "barycenter_x", "barycenter_y",
+                 "velocity_x", "velocity_y", "confidence", "state", "age", "hits",
+                 "time_since_update", "detection_index", "class_id"):
+        assert name in ctrack.TRACK_DTYPE.names
+
+
+def test_parameters_reach_the_library():
+    t = ctrack.Tracker(min_hits=5, lost_lifetime=3.5)
+    assert t.config["min_hits"] == 5
+    assert t.config["lost_lifetime"] == 3.5
+    t.close()
+
+
+def test_bad_parameters_raise_with_the_library_message():
+    with pytest.raises(ctrack.CtrackError, match="config.lost_lifetime"):
+        ctrack.Tracker(lost_lifetime=-1)
+    with pytest.raises(ctrack.CtrackError, match="config.high_score") as e:
+        ctrack.Tracker(high_score=float("nan"))
+    assert e.value.status == -1
+    with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
+        ctrack.Tracker(source=ctrack.SOURCE_PIXELS)
+    with pytest.raises(TypeError, match="unknown parameter 'bogus'"):
+        ctrack.Tracker(bogus=1)
+    with pytest.raises(TypeError):
+        ctrack.Tracker(min_hits="three")
+    with pytest.raises(ValueError, match="fps"):
+        ctrack.Tracker(fps=0)
+
+
+def test_replay_equals_ct_track(tmp_path):
+    """The binding on TUD-Campus gives exactly what ct-track writes."""
+    n, fps, w, h = seqinfo("TUD-Campus")
+    dets = load_dets("TUD-Campus")
+    lines = []
+    with ctrack.Tracker(fps=fps) as t:
+        for k in range(1, n + 1):
+            for tr in t.feed(None, dets.get(k)):
+                lines.append("%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1" % (
+                    k, tr["id"], tr["left"], tr["top"], tr["width"], tr["height"],
+                    tr["confidence"]))
+    ct = os.environ.get("CTRACK_CT_TRACK")
+    assert ct, "CTRACK_CT_TRACK must name ct-track (meson test sets it)"
+    out = subprocess.run([ct, "-q", "-d", os.path.join(DATA, "TUD-Campus", "det", "det.txt"),
+                          "-r", str(fps)], check=True, capture_output=True, text=True).stdout
+    assert len(lines) > 200
+    assert lines == out.splitlines()
+
+
+def test_frames_of_every_kind():
+    h, w = 48, 64
+    rng = np.random.default_rng(1)
+    grey = rng.integers(0, 255, (h, w), dtype=np.uint8)
+    i420 = rng.integers(0, 255, (h * 3 // 2, w), dtype=np.uint8)
+    bgr = rng.integers(0, 255, (h, w, 3), dtype=np.uint8)
+    det = [[10, 5, 12, 30, 0.9]]
+    with ctrack.Tracker() as t:
+        assert len(t.feed(grey, det)) == 1
+        assert len(t.feed(i420, det, format="i420")) == 1
+        assert len(t.feed(i420, det, format="nv12")) == 1
+        assert len(t.feed(bgr, det)) == 1
+        assert len(t.feed(bgr[:47, :63], det)) == 1          # odd size
+        assert len(t.feed(grey[:, ::1][::2], det)) == 1      # a strided view
+        assert len(t.feed(None, det)) == 1
+
+
+def test_bgr_conversion_matches_bt601():
+    bgr = np.zeros((4, 4, 3), np.uint8)
+    bgr[:] = (255, 255, 255)
+    out = ctrack.bgr_to_i420(bgr)
+    assert out.shape == (6, 4)
+    assert out[0, 0] == 235 and out[4, 0] == 128
+    bgr[:] = (0, 0, 0)
+    assert ctrack.bgr_to_i420(bgr)[0, 0] == 16
+
+
+def test_timestamps():
+    with ctrack.Tracker(fps=10) as t:
+        t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=5.0)
+        tr = t.feed(None, [[12, 10, 20, 40, 0.9]])            # 5.1 s
+        assert tr["velocity_x"][0] > 0
+        with pytest.raises(ctrack.CtrackError, match="timestamp_us") as e:
+            t.feed(None, None, timestamp=5.0)
+        assert e.value.status == -5
+        with pytest.raises(ValueError, match="timestamp"):
+            t.feed(None, None, timestamp=float("nan"))
+        t.reset()
+        assert len(t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=0.0)) == 1
+
+
+def test_bad_input_raises_and_changes_nothing():
+    with ctrack.Tracker() as t:
+        before = t.feed(None, [[10, 10, 20, 40, 0.9]])
+        with pytest.raises(ctrack.CtrackError, match=r"dets\[1\].width"):
+            t.feed(None, [[10, 10, 20, 40, 0.9], [0, 0, float("nan"), 10, 0.5]])
+        with pytest.raises(ValueError, match="shape"):
+            t.feed(None, [[1, 2, 3]])
+        with pytest.raises(ValueError, match="class"):
+            t.feed(None, [[1, 2, 3, 4, 0.9, 0.5]])
+        with pytest.raises(ValueError, match="uint8"):
+            t.feed(np.zeros((4, 4), np.float32))
+        with pytest.raises(ValueError, match="HxWx3"):
+            t.feed(np.zeros((4, 4, 4), np.uint8))
+        with pytest.raises(ValueError, match="format"):
+            t.feed(np.zeros((6, 4), np.uint8), format="yuyv")
+        with pytest.raises(ValueError, match="H\\*3/2"):
+            t.feed(np.zeros((5, 4), np.uint8), format="i420")
+        with pytest.raises(ValueError, match="format"):
+            t.feed(None, format="i420")
+        assert np.array_equal(t.tracks(), before)
+
+
+def test_close_and_context_manager():
+    t = ctrack.Tracker()
+    t.close()
+    t.close()
+    with pytest.raises(ValueError, match="closed"):
+        t.feed(None)
+    with ctrack.Tracker() as t2:
+        t2.feed(None)
+    with pytest.raises(ValueError, match="closed"):
+        t2.feed(None)
+
+
+def test_many_tracks_grow_the_buffer():
+    dets = [[40.0 * i, 10, 20, 40, 0.9] for i in range(150)]
+    with ctrack.Tracker() as t:
+        tr = t.feed(None, dets)
+    assert len(tr) == 150
+    assert list(tr["id"]) == list(range(1, 151))
+    assert list(tr["detection_index"]) == list(range(150))
+
+
+def test_wrong_abi_is_refused(tmp_path):
+    with pytest.raises(ImportError):
+        ctrack.load(str(tmp_path / "libnothing.so"))
