@@ -14,6 +14,7 @@
 #include "ctrack/ctrack.h"
 #include "detfile.h"
 #include "input.h"
+#include "overlay.h"
 
 enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 
@@ -72,6 +73,8 @@ static void usage(FILE *out)
             "      --no-pixels        read the video for its frames but give the tracker\n"
             "                         detections only\n"
             "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
+            "      --overlay FILE     also write the frames as Y4M with boxes, ids and trails\n"
+            "                         drawn (grey frames with detections only)\n"
             "  -p, --param NAME=VALUE set a tracker parameter (repeatable), see below\n"
             "      --progress         print progress on standard error (default when it is\n"
             "                         a terminal)\n"
@@ -147,13 +150,13 @@ int main(int argc, char **argv)
 {
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
-    const char *det_path = NULL, *out_path = NULL;
+    const char *det_path = NULL, *out_path = NULL, *overlay_path = NULL;
     int width = 0, height = 0, no_pixels = 0;
     int progress = isatty(STDERR_FILENO);
     uint32_t format = CT_FORMAT_I420;
     double fps = 0;
 
-    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS };
+    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY };
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
         {"size", required_argument, NULL, 's'},
@@ -161,6 +164,7 @@ int main(int argc, char **argv)
         {"fps", required_argument, NULL, 'r'},
         {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
         {"output", required_argument, NULL, 'o'},
+        {"overlay", required_argument, NULL, OPT_OVERLAY},
         {"param", required_argument, NULL, 'p'},
         {"progress", no_argument, NULL, OPT_PROGRESS},
         {"quiet", no_argument, NULL, 'q'},
@@ -199,6 +203,7 @@ int main(int argc, char **argv)
         }
         case OPT_NO_PIXELS: no_pixels = 1; break;
         case 'o': out_path = optarg; break;
+        case OPT_OVERLAY: overlay_path = optarg; break;
         case 'p':
             if (set_param(&cfg, optarg) < 0)
                 return EXIT_USAGE;
@@ -227,6 +232,12 @@ int main(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    if (overlay_path && !strcmp(overlay_path, "-") && (!out_path || !strcmp(out_path, "-"))) {
+        fprintf(stderr, "ct-track: --overlay - and the tracks cannot both go to standard "
+                        "output; give -o FILE\n");
+        return EXIT_USAGE;
+    }
+
     char msg[512];
     if (ct_config_check(&cfg, msg, sizeof msg) != CT_OK) {
         fprintf(stderr, "ct-track: %s\n", msg);
@@ -237,6 +248,7 @@ int main(int argc, char **argv)
     ct_detfile df;
     ct_input *in = NULL;
     ct_tracker *tracker = NULL;
+    ct_overlay *overlay = NULL;
     FILE *out = NULL;
     ct_track *tracks = NULL;
     size_t tracks_cap = 0;
@@ -276,11 +288,29 @@ int main(int argc, char **argv)
         goto done;
     }
 
+    if (overlay_path) {
+        /* Y4M wants a rational rate: the header's, or --fps in thousandths. */
+        long num = lround(rate_num * 1000), den = lround(rate_den * 1000);
+        long a = num, b = den;
+        while (b) {
+            long r = a % b;
+            a = b;
+            b = r;
+        }
+        num /= a;
+        den /= a;
+        overlay = ct_overlay_open(overlay_path, width, height, (int)num, (int)den, msg, sizeof msg);
+        if (!overlay) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            goto done;
+        }
+    }
+
     const double t0 = now_seconds();
     double next_progress = t0 + 0.5;
     long long k = 0;
     for (;;) {
-        ct_frame frame;
+        ct_frame frame, picture;
         if (in) {
             int r = ct_input_read(in, &frame, msg, sizeof msg);
             if (r < 0) {
@@ -289,6 +319,7 @@ int main(int argc, char **argv)
             }
             if (r == 0)
                 break;
+            picture = frame;
             if (no_pixels) {
                 frame.format = CT_FORMAT_NONE;
                 memset(frame.planes, 0, sizeof frame.planes);
@@ -300,6 +331,7 @@ int main(int argc, char **argv)
             ct_frame_default(&frame, sizeof frame);
             frame.width = width;
             frame.height = height;
+            picture = frame;
         }
         k++;
         /* Timestamps from the frame index and the rate, in microseconds. */
@@ -336,6 +368,10 @@ int main(int argc, char **argv)
                     (unsigned long long)t->id, t->left, t->top, t->width, t->height,
                     t->confidence);
         }
+        if (overlay && ct_overlay_write(overlay, &picture, tracks, count, msg, sizeof msg) < 0) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            goto done;
+        }
         if (progress) {
             double now = now_seconds();
             if (now >= next_progress) {
@@ -360,8 +396,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "ct-track: error writing the tracks: %s\n", strerror(errno));
         goto done;
     }
+    if (overlay) {
+        int orc = ct_overlay_close(overlay, msg, sizeof msg);
+        overlay = NULL;
+        if (orc < 0) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            goto done;
+        }
+    }
     rc = 0;
 done:
+    if (overlay)
+        ct_overlay_close(overlay, msg, sizeof msg);
     if (out && out != stdout) {
         if (fclose(out) != 0 && rc == 0) {
             fprintf(stderr, "ct-track: error writing '%s': %s\n", out_path, strerror(errno));

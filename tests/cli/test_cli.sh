@@ -100,6 +100,16 @@ else
     printf 'YUV4MPEG2 W640 H480 F25:1 C420jpeg\nFRAMX\n' > "$tmp/badframe.y4m"
     expect "bad y4m frame header" 1 "bad Y4M frame header" -- "$ct" -d "$tud/det/det.txt" "$tmp/badframe.y4m"
     expect "raw without --size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" "$tmp/tud.i420"
+    # Pictures: --overlay writes every frame, as I420 Y4M of the input's size and rate.
+    expect "overlay" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov.y4m" "$tmp/tud.y4m"
+    [ "$(head -n 1 "$tmp/ov.y4m")" = "YUV4MPEG2 W640 H480 F25:1 Ip A1:1 C420jpeg" ] \
+        && ok "overlay header" || bad "overlay header" "$(head -n 1 "$tmp/ov.y4m")"
+    [ "$(stat -c %s "$tmp/ov.y4m")" = "$(stat -c %s "$tmp/tud.y4m" | awk -v h="$(head -n 1 "$tmp/tud.y4m" | wc -c)" -v o="$(head -n 1 "$tmp/ov.y4m" | wc -c)" '{print $1 - h + o}')" ] \
+        && ok "overlay has every frame" || bad "overlay has every frame" "sizes differ"
+    expect "overlay of a grey video" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov-gray.y4m" -s 640x480 -f gray "$tmp/tud.gray"
+    if cmp -s "$tmp/ov.y4m" "$tmp/tud.y4m"; then bad "overlay draws" "frames unchanged"; else ok "overlay draws"; fi
+    expect "overlay from standard input to standard output" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -o '$tmp/t.txt' --overlay - - < '$tmp/tud.y4m' > '$tmp/ov2.y4m'"
+    same "overlay to standard output" "$tmp/ov2.y4m" "$tmp/ov.y4m"
     expect "progress" 0 "frames/s" -- "$ct" --progress -d "$tud/det/det.txt" -o /dev/null "$tmp/tud.y4m"
 fi
 
@@ -159,6 +169,11 @@ expect "parameter out of range" 2 "config.lost_lifetime" -- "$ct" -d "$tud/det/d
 expect "parameter NaN" 2 "high_score: 'nan' is not a number" -- "$ct" -d "$tud/det/det.txt" -p high_score=nan
 expect "parameter set" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -p min_hits=1 -p report_lost_time=0
 if cmp -s "$tmp/out" "$tmp/detonly.txt"; then bad "parameters change the result" "same tracks"; else ok "parameters change the result"; fi
+expect "overlay and tracks both on standard output" 2 "--overlay -" -- "$ct" -d "$tud/det/det.txt" --overlay -
+expect "overlay without a size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" --overlay "$tmp/x.y4m"
+expect "overlay of detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 --overlay "$tmp/grey.y4m"
+[ "$(head -n 1 "$tmp/grey.y4m")" = "YUV4MPEG2 W640 H480 F25:1 Ip A1:1 C420jpeg" ] && ok "overlay of detections only header" || bad "overlay of detections only header" "$(head -n 1 "$tmp/grey.y4m")"
+expect "unwritable overlay" 1 "cannot write overlay" -- "$ct" -d "$tud/det/det.txt" -s 640x480 --overlay "$tmp/no/such/o.y4m"
 expect "unwritable output" 1 "cannot write" -- "$ct" -d "$tud/det/det.txt" -o "$tmp/no/such/dir/out.txt"
 if [ -w /dev/full ]; then
     expect "full disk" 1 "error writing" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/full

@@ -1,0 +1,25 @@
+/* ct-track --overlay: writes the frames with each track's box, id and a
+ * short trail of its barycenter drawn on them, as I420 Y4M. */
+#ifndef CT_TOOLS_OVERLAY_H
+#define CT_TOOLS_OVERLAY_H
+
+#include <stddef.h>
+
+#include "ctrack/ctrack.h"
+
+typedef struct ct_overlay ct_overlay;
+
+/* Opens `path` ("-" for standard output) for frames of w x h at the rate
+ * num/den. Returns NULL with a message in err. */
+ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int rate_den,
+                            char *err, size_t err_len);
+
+/* Writes one frame: `frame`'s pixels (or mid grey when it has none) with the
+ * tracks drawn. Returns 0, or -1 with a message in err. */
+int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
+                     char *err, size_t err_len);
+
+/* Closes the file; returns -1 with a message if a write failed. */
+int ct_overlay_close(ct_overlay *ov, char *err, size_t err_len);
+
+#endif
