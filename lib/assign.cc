@@ -71,6 +71,15 @@ void Assigner::solve(const double *cost, int n, int m, double limit,
     out_ = nullptr;
 }
 
+size_t Assigner::memory_bytes() const
+{
+    return (parent_.capacity() + root_.capacity() + comp_rows_.capacity() +
+            comp_cols_.capacity() + order_.capacity() + p_.capacity() + way_.capacity()) *
+               sizeof(int) +
+           (sub_.capacity() + u_.capacity() + v_.capacity() + minv_.capacity()) * sizeof(double) +
+           used_.capacity();
+}
+
 // Solves the component in comp_rows_ x comp_cols_ exactly. Every row and
 // column gets a dummy partner at limit / 2, which turns "may stay unmatched"
 // into a square assignment problem of size r + c.

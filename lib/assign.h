@@ -2,6 +2,7 @@
 #ifndef CTRACK_ASSIGN_H
 #define CTRACK_ASSIGN_H
 
+#include <cstddef>
 #include <vector>
 
 namespace ctrack {
@@ -19,6 +20,8 @@ class Assigner {
 public:
     void solve(const double *cost, int n, int m, double limit,
                std::vector<int> &row_to_col);
+    // Heap bytes held by the buffers.
+    size_t memory_bytes() const;
 
 private:
     void solve_component(const double *cost, int m, double limit);

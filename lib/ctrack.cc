@@ -7,6 +7,7 @@
 #include <exception>
 #include <new>
 
+#include "clock.h"
 #include "config.h"
 #include "error.h"
 #include "frame.h"
@@ -18,6 +19,7 @@
 struct ct_tracker {
     explicit ct_tracker(const ct_config &cfg) : engine(cfg) {}
     ctrack::Engine engine;
+    uint64_t steps = 0, feed_ns = 0, validate_ns = 0;
     // The message of the last failed call. A fixed buffer: reporting an
     // error never allocates.
     mutable char error[512] = {0};
@@ -132,6 +134,7 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
 {
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
+    ctrack::Stopwatch sw;
     clear_error(tracker);
     char *msg = tracker->error;
     const size_t len = sizeof tracker->error;
@@ -147,10 +150,17 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
         return ctrack::fail(msg, len, CT_ERROR_BAD_STATE,
                             "frame.timestamp_us: %lld does not increase (the last was %lld)",
                             (long long)f.timestamp_us, (long long)e.last_time());
-    return guarded(tracker, [&] {
+    const uint64_t validate_ns = sw.lap();
+    st = guarded(tracker, [&] {
         e.step(f.timestamp_us, ctrack::ImageSize{f.width, f.height}, dets, n);
         return CT_OK;
     });
+    if (st == CT_OK) {
+        tracker->steps++;
+        tracker->validate_ns += validate_ns;
+        tracker->feed_ns += validate_ns + sw.lap();
+    }
+    return st;
 }
 
 int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
@@ -182,6 +192,47 @@ int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capac
         std::memset(dst, 0, elem_size);
         std::memcpy(dst, &tracks[i], sizeof(ct_track));
     }
+    return CT_OK;
+}
+
+const char *ct_stage_name(int stage)
+{
+    switch (stage) {
+    case CT_STAGE_VALIDATE: return "validate";
+    case CT_STAGE_PREDICT: return "predict";
+    case CT_STAGE_ASSOCIATE: return "associate";
+    case CT_STAGE_LIFECYCLE: return "lifecycle";
+    case CT_STAGE_REPORT: return "report";
+    default: return nullptr;
+    }
+}
+
+int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    if (!stats)
+        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
+                            "stats: NULL pointer");
+    const size_t size = stats->size;
+    if (size < sizeof(ct_stats) || size > (1u << 16))
+        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
+                            "stats.size: %zu is not sizeof(ct_stats) (%zu, or more from a "
+                            "newer header)",
+                            size, sizeof(ct_stats));
+    ct_stats s = {};
+    s.size = size;
+    s.steps = tracker->steps;
+    s.feed_ns = tracker->feed_ns;
+    const ctrack::Engine &e = tracker->engine;
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
+        s.stage_ns[i] = e.stage_ns()[i];
+    s.stage_ns[CT_STAGE_VALIDATE] = tracker->validate_ns;
+    s.live_tracks = e.live_tracks();
+    s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes();
+    std::memset(static_cast<void *>(stats), 0, size);
+    std::memcpy(static_cast<void *>(stats), &s, sizeof s);
     return CT_OK;
 }
 

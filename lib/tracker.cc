@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clock.h"
+
 namespace ctrack {
 
 namespace {
@@ -163,7 +165,9 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
     last_us_ = t_us;
     has_time_ = true;
 
+    Stopwatch sw;
     predict(dt);
+    stage_ns_[CT_STAGE_PREDICT] += sw.lap();
 
     det_used_.assign(n, 0);
     pool_dets_.clear();
@@ -199,6 +203,7 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
         if (tracks_[i].state == CT_TRACK_TENTATIVE)
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
+    stage_ns_[CT_STAGE_ASSOCIATE] += sw.lap();
 
     // Lifecycle of the tracks no detection updated.
     size_t k = 0;
@@ -230,8 +235,21 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
             break;
         start_track(dets[j], j, t_us, first);
     }
+    stage_ns_[CT_STAGE_LIFECYCLE] += sw.lap();
 
     report(t_us, image);
+    stage_ns_[CT_STAGE_REPORT] += sw.lap();
+}
+
+size_t Engine::memory_bytes() const
+{
+    return sizeof(*this) + tracks_.capacity() * sizeof(Track) +
+           saved_tracks_.capacity() * sizeof(Track) +
+           (reported_.capacity() + saved_reported_.capacity()) * sizeof(ct_track) +
+           cost_.capacity() * sizeof(double) +
+           (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
+            low_dets_.capacity()) * sizeof(int) +
+           det_used_.capacity() + assigner_.memory_bytes();
 }
 
 void Engine::report(int64_t t_us, ImageSize image)

@@ -46,6 +46,10 @@ public:
     void reset();
 
     const std::vector<ct_track> &reported() const { return reported_; }
+    size_t live_tracks() const { return tracks_.size(); }
+    size_t memory_bytes() const;
+    // Nanoseconds spent in each ct_stage, summed over the steps.
+    const uint64_t *stage_ns() const { return stage_ns_; }
     bool has_time() const { return has_time_; }
     int64_t last_time() const { return last_us_; }
 
@@ -58,6 +62,7 @@ private:
     void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
     void report(int64_t t_us, ImageSize image);
 
+    uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
     ct_config cfg_;
     std::vector<Track> tracks_;
     std::vector<ct_track> reported_;

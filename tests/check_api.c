@@ -315,6 +315,53 @@ START_TEST(reset_forgets_time_and_tracks)
 }
 END_TEST
 
+START_TEST(stats)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_stats st;
+    st.size = sizeof st;
+    ck_assert_int_eq(ct_tracker_get_stats(NULL, &st), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_stats(t, NULL), CT_ERROR_INVALID_ARGUMENT);
+    st.size = 8;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "stats.size"));
+
+    ct_detection d[2] = {test_det(10, 10, 20, 40, 0.9f), test_det(100, 10, 20, 40, 0.9f)};
+    ct_track out[64];
+    for (int k = 0; k < 5; k++)
+        test_step(t, 1000 * k, d, 2, out);
+    ct_frame back = test_frame(0, 0, 0); /* refused: not a step */
+    ck_assert_int_eq(ct_tracker_feed(t, &back, NULL, 0), CT_ERROR_BAD_STATE);
+
+    /* A newer caller's bigger struct: the tail is zeroed, its size kept. */
+    struct {
+        ct_stats s;
+        uint64_t extra;
+    } big;
+    memset(&big, 0x5A, sizeof big);
+    big.s.size = sizeof big;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &big.s), CT_OK);
+    ck_assert_uint_eq(big.s.size, sizeof big);
+    ck_assert_uint_eq(big.extra, 0);
+    ck_assert_uint_eq(big.s.steps, 5);
+    ck_assert_uint_eq(big.s.live_tracks, 2);
+    ck_assert_uint_gt(big.s.memory_bytes, 2 * sizeof(ct_track));
+    ck_assert_uint_gt(big.s.feed_ns, 0);
+    uint64_t sum = 0;
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++) {
+        sum += big.s.stage_ns[i];
+        if (!ct_stage_name(i))
+            ck_assert_uint_eq(big.s.stage_ns[i], 0);
+    }
+    ck_assert_uint_gt(sum, 0);
+    ck_assert_uint_le(sum, big.s.feed_ns);
+    ck_assert_str_eq(ct_stage_name(CT_STAGE_ASSOCIATE), "associate");
+    ck_assert_ptr_null(ct_stage_name(-1));
+    ck_assert_ptr_null(ct_stage_name(CT_STATS_MAX_STAGES));
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *api_suite(void)
 {
     Suite *s = suite_create("api");
@@ -333,6 +380,7 @@ static Suite *api_suite(void)
     tcase_add_test(tc, absurd_detection_count);
     tcase_add_test(tc, timestamp_must_increase);
     tcase_add_test(tc, reset_forgets_time_and_tracks);
+    tcase_add_test(tc, stats);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -234,6 +234,44 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 /* Forgets every track and the last timestamp; ids keep increasing. */
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
+/* ------------------------------------------------------------------------ */
+/* Timing and memory, for benchmarks and monitoring. */
+
+/* The stages of a step, each timed by the library. Values are pinned; later
+ * versions add stages after the last. */
+typedef enum ct_stage {
+    CT_STAGE_VALIDATE = 0,  /* checking the frame and detections */
+    CT_STAGE_PREDICT = 1,   /* motion prediction of every track */
+    CT_STAGE_ASSOCIATE = 2, /* costs and assignment */
+    CT_STAGE_LIFECYCLE = 3, /* updates, losses, removals, births */
+    CT_STAGE_REPORT = 4     /* building the reported tracks */
+} ct_stage;
+
+#define CT_STATS_MAX_STAGES 16
+
+typedef struct ct_stats {
+    /* sizeof(ct_stats) as the caller's header knows it; set it before the
+     * call. */
+    size_t size;
+    /* Steps run since create (a refused feed is not a step). */
+    uint64_t steps;
+    /* Wall time spent in ct_tracker_feed() and in each stage, nanoseconds,
+     * summed over the steps; stages this version lacks stay 0. */
+    uint64_t feed_ns;
+    uint64_t stage_ns[CT_STATS_MAX_STAGES];
+    /* Tracks alive now (tentative, confirmed, lost). */
+    uint64_t live_tracks;
+    /* Heap bytes the tracker holds now (its buffers' capacity). */
+    uint64_t memory_bytes;
+} ct_stats;
+
+/* Fills *stats (stats->size must be set). Resetting the tracker does not
+ * clear them. */
+CT_API int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats);
+
+/* The name of a stage ("predict", ...), or NULL for a value that is not one. */
+CT_API const char *ct_stage_name(int stage);
+
 /* The message of the last failed call on this tracker ("" if none). The
  * string is owned by the tracker and valid until its next call. Accepts
  * NULL. */

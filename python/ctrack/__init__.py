@@ -237,6 +237,21 @@ class Tracker:
         self._check(st)
         return np.frombuffer(self._out, dtype=TRACK_DTYPE, count=count.value).copy()
 
+    def stats(self):
+        """The library's counters: steps, feed time and time per stage (in
+        seconds), live tracks and the heap bytes the tracker holds."""
+        t = self._handle()
+        s = _abi.Stats()
+        s.size = ctypes.sizeof(s)
+        self._check(self._lib.ct_tracker_get_stats(t, ctypes.byref(s)))
+        stages = {}
+        for i in range(_abi.STATS_MAX_STAGES):
+            name = self._lib.ct_stage_name(i)
+            if name:
+                stages[name.decode()] = s.stage_ns[i] * 1e-9
+        return {"steps": s.steps, "feed_seconds": s.feed_ns * 1e-9, "stages": stages,
+                "live_tracks": s.live_tracks, "memory_bytes": s.memory_bytes}
+
     # -- conversions -------------------------------------------------------
     def _fill_frame(self, f, frame, format):
         """Fills f's planes from a numpy frame; returns the arrays that must

@@ -96,6 +96,20 @@ class Track(C.Structure):
     ]
 
 
+STATS_MAX_STAGES = 16
+
+
+class Stats(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("steps", C.c_uint64),
+        ("feed_ns", C.c_uint64),
+        ("stage_ns", C.c_uint64 * STATS_MAX_STAGES),
+        ("live_tracks", C.c_uint64),
+        ("memory_bytes", C.c_uint64),
+    ]
+
+
 def declare(lib):
     """Sets the argument and result types of every function of `lib`."""
     P = C.POINTER
@@ -114,6 +128,8 @@ def declare(lib):
                                             P(C.c_size_t)]),
         "ct_tracker_reset": (C.c_int, [C.c_void_p]),
         "ct_tracker_last_error": (C.c_char_p, [C.c_void_p]),
+        "ct_tracker_get_stats": (C.c_int, [C.c_void_p, P(Stats)]),
+        "ct_stage_name": (C.c_char_p, [C.c_int]),
     }
     for name, (res, args) in sig.items():
         f = getattr(lib, name)

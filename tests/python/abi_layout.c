@@ -34,6 +34,10 @@ int main(void)
     FIELD(ct_track, state); FIELD(ct_track, age); FIELD(ct_track, hits);
     FIELD(ct_track, time_since_update); FIELD(ct_track, detection_index);
     FIELD(ct_track, class_id);
+    first = 0;
+    printf("}, \"Stats\": {\"sizeof\": %zu, ", sizeof(ct_stats));
+    FIELD(ct_stats, size); FIELD(ct_stats, steps); FIELD(ct_stats, feed_ns);
+    FIELD(ct_stats, stage_ns); FIELD(ct_stats, live_tracks); FIELD(ct_stats, memory_bytes);
     printf("}}\n");
     return 0;
 }

@@ -165,3 +165,15 @@ def test_many_tracks_grow_the_buffer():
 def test_wrong_abi_is_refused(tmp_path):
     with pytest.raises(ImportError):
         ctrack.load(str(tmp_path / "libnothing.so"))
+
+
+def test_stats():
+    with ctrack.Tracker() as t:
+        for k in range(4):
+            t.feed(None, [[10 + k, 10, 20, 40, 0.9], [100, 10, 20, 40, 0.9]])
+        s = t.stats()
+    assert s["steps"] == 4
+    assert s["live_tracks"] == 2
+    assert s["memory_bytes"] > 0
+    assert set(s["stages"]) >= {"validate", "predict", "associate", "lifecycle", "report"}
+    assert 0 < sum(s["stages"].values()) <= s["feed_seconds"]
