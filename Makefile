@@ -4,7 +4,7 @@ BUILD ?= build
 MESON_OPTS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps check demo install clean
+.PHONY: all deps check demo install clean eval bench
 
 # Every verb first installs the Debian packages that are missing (a quick
 # dpkg query when nothing is).
@@ -29,3 +29,10 @@ install: all
 
 clean:
 	rm -rf $(BUILD)
+
+# Both run in their own venv (tools/venv.sh eval), created on first use.
+eval: all
+	"$$(tools/venv.sh eval)" tools/eval.py $(BUILD)
+
+bench: all
+	"$$(tools/venv.sh eval)" bench/bench.py $(BUILD)

@@ -15,6 +15,7 @@
 #include "detfile.h"
 #include "input.h"
 #include "overlay.h"
+#include "peakmem.h"
 
 enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 
@@ -386,8 +387,12 @@ int main(int argc, char **argv)
     }
     if (progress) {
         double el = now_seconds() - t0;
-        fprintf(stderr, "\rct-track: %lld frames in %.2f s, %.0f frames/s\n", k, el,
+        long rss = ct_peak_rss_kib();
+        fprintf(stderr, "\rct-track: %lld frames in %.3f s, %.0f frames/s", k, el,
                 el > 0 ? k / el : 0.0);
+        if (rss >= 0)
+            fprintf(stderr, ", peak memory %.1f MiB", rss / 1024.0);
+        fputc('\n', stderr);
     }
     if (df.max_frame > k)
         fprintf(stderr, "ct-track: warning: detections go to frame %d, the video has %lld\n",

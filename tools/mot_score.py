@@ -14,6 +14,24 @@ import sys
 import motmetrics as mm
 
 
+def barycenter_error(acc, gt, ts):
+    """The paper's barycenter error as ALGORITHM.md defines it: over the
+    matched track/ground-truth pairs, the mean distance between the box
+    centres divided by the ground-truth box height, in percent."""
+    ev = acc.mot_events
+    ev = ev[ev["Type"].isin(["MATCH", "SWITCH"])]
+    if len(ev) == 0:
+        return float("nan")
+    frames = ev.index.get_level_values("FrameId")
+    g = gt.loc[list(zip(frames, ev["OId"]))]
+    t = ts.loc[list(zip(frames, ev["HId"]))]
+    gx = g["X"].values + g["Width"].values / 2
+    gy = g["Y"].values + g["Height"].values / 2
+    tx = t["X"].values + t["Width"].values / 2
+    ty = t["Y"].values + t["Height"].values / 2
+    return float(100.0 * (((gx - tx) ** 2 + (gy - ty) ** 2) ** 0.5 / g["Height"].values).mean())
+
+
 def score(gt_path, tracks_path):
     gt = mm.io.loadtxt(gt_path, fmt="mot15-2D", min_confidence=1)
     ts = mm.io.loadtxt(tracks_path, fmt="mot15-2D")
@@ -33,6 +51,7 @@ def score(gt_path, tracks_path):
         "FN": int(row["num_misses"]),
         "MT": int(row["mostly_tracked"]),
         "GT": int(row["num_unique_objects"]),
+        "barycenter_error": barycenter_error(acc, gt, ts),
     }
 
 
@@ -49,8 +68,9 @@ def main():
         print(json.dumps(r))
     else:
         print("MOTA %.1f  IDF1 %.1f  IDsw %d  precision %.1f  recall %.1f  FP %d  FN %d  MT %d/%d"
+              "  barycenter error %.2f%%"
               % (r["MOTA"], r["IDF1"], r["IDsw"], r["precision"], r["recall"],
-                 r["FP"], r["FN"], r["MT"], r["GT"]))
+                 r["FP"], r["FN"], r["MT"], r["GT"], r["barycenter_error"]))
     bad = []
     if args.min_mota is not None and r["MOTA"] < args.min_mota:
         bad.append("MOTA %.1f < %.1f" % (r["MOTA"], args.min_mota))

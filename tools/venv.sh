@@ -1,20 +1,30 @@
 #!/bin/sh
-# Creates (once) the project's Python venv with tools/requirements.txt and
-# prints its python. The venv lives in $CT_VENV, by default .venv at the top
-# of the source tree; it is rebuilt when the requirements change.
+# Creates (once) one of the project's Python venvs and prints its python.
+#   venv.sh        tests: tools/requirements.txt, in $CT_VENV (default .venv)
+#   venv.sh eval   make eval / make bench: tools/requirements-eval.txt, every
+#                  package pinned and installed without dependency resolution,
+#                  in $CT_EVAL_VENV (default .venv-eval)
+# A venv is rebuilt when its requirements file changes.
 set -eu
 top=$(cd "$(dirname "$0")/.." && pwd)
-venv=${CT_VENV:-$top/.venv}
-req=$top/tools/requirements.txt
+if [ "${1:-}" = "eval" ]; then
+    venv=${CT_EVAL_VENV:-$top/.venv-eval}
+    req=$top/tools/requirements-eval.txt
+    nodeps=--no-deps
+else
+    venv=${CT_VENV:-$top/.venv}
+    req=$top/tools/requirements.txt
+    nodeps=
+fi
 stamp=$venv/.requirements
 if [ ! -x "$venv/bin/python" ] || ! cmp -s "$req" "$stamp"; then
-    echo "venv: setting up $venv (tools/requirements.txt)" >&2
+    echo "venv: setting up $venv ($(basename "$req"))" >&2
     rm -rf "$venv"
     python3 -m venv "$venv" >&2 || {
         echo "venv: python3 -m venv failed: install python3-venv (tools/install-deps.sh)" >&2
         exit 1
     }
-    "$venv/bin/pip" install --quiet --disable-pip-version-check -r "$req" >&2
+    "$venv/bin/pip" install --quiet --disable-pip-version-check $nodeps -r "$req" >&2
     cp "$req" "$stamp"
 fi
 echo "$venv/bin/python"

@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""make bench: ctrack's speed and memory on one core, each figure beside a
+baseline measured in the same run (these shared machines drift by a third
+from one minute to the next, so only the ratios compare across runs).
+
+    bench.py BUILD_DIR [--out DOCS_DIR] [--quick]
+
+Prints the tables, writes BUILD_DIR/bench.json and DOCS_DIR/bench.md.
+"""
+import argparse
+import datetime
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(TOP, "tools"))
+import peers  # noqa: E402
+from y4m import open_y4m  # noqa: E402
+
+DATA = os.path.join(TOP, "tests", "data", "mot15")
+PETS_DET = os.path.join(DATA, "PETS09-S2L1", "det", "det.txt")
+CORE = 0
+
+
+def cache_dir():
+    d = os.environ.get("CT_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
+    os.makedirs(d, exist_ok=True)
+    return d
+
+
+def pets_y4m():
+    return subprocess.run([os.path.join(TOP, "tools", "fetch-pets09.sh")], check=True,
+                          capture_output=True, text=True).stdout.strip()
+
+
+def pets_hd(src):
+    """PETS09-S2L1 scaled to 1920x1080, and its detections scaled the same."""
+    y4m = os.path.join(cache_dir(), "pets09-s2l1-1080p.y4m")
+    det = os.path.join(cache_dir(), "pets09-s2l1-1080p-det.txt")
+    if not os.path.exists(y4m):
+        print("bench: scaling PETS09-S2L1 to 1920x1080 (once, cached)", file=sys.stderr)
+        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", src, "-vf", "scale=1920:1080",
+                        "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", y4m + ".part"], check=True)
+        os.replace(y4m + ".part", y4m)
+    if not os.path.exists(det):
+        d = np.loadtxt(PETS_DET, delimiter=",", ndmin=2)
+        d[:, [2, 4]] *= 1920 / 768
+        d[:, [3, 5]] *= 1080 / 576
+        np.savetxt(det, d, delimiter=",", fmt="%.3f")
+    return y4m, det
+
+
+def warm(path):
+    with open(path, "rb") as f:
+        while f.read(1 << 24):
+            pass
+
+
+def timed_child(cmd):
+    """Runs ct-track on one core; returns (wall seconds, peak RSS KiB as
+    ct-track reports it)."""
+    t0 = time.perf_counter()
+    p = subprocess.run(["taskset", "-c", str(CORE)] + cmd + ["--progress"],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    wall = time.perf_counter() - t0
+    if p.returncode != 0:
+        raise SystemExit("bench: %s failed: %s" % (" ".join(cmd), p.stderr))
+    m = re.search(r"peak memory ([0-9.]+) MiB", p.stderr)
+    return wall, float(m.group(1)) * 1024 if m else float("nan")
+
+
+def best_of(n, cmd):
+    runs = [timed_child(cmd) for _ in range(n)]
+    return min(r[0] for r in runs), max(r[1] for r in runs)
+
+
+def mog2_ms(y4m, frames):
+    """OpenCV MOG2 alone, ms per frame on one thread (apply() only)."""
+    import cv2
+    cv2.setNumThreads(1)
+    w, h, _, rows = open_y4m(y4m)
+    sub = cv2.createBackgroundSubtractorMOG2()
+    spent = 0.0
+    n = min(frames, len(rows))
+    for k in range(n):
+        bgr = cv2.cvtColor(np.asarray(rows[k]).reshape(h * 3 // 2, w), cv2.COLOR_YUV2BGR_I420)
+        t0 = time.perf_counter()
+        sub.apply(bgr)
+        spent += time.perf_counter() - t0
+    return 1e3 * spent / n
+
+
+def load_dets():
+    d = np.loadtxt(PETS_DET, delimiter=",", ndmin=2)
+    return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("build")
+    ap.add_argument("--out", default=os.path.join(TOP, "docs"))
+    ap.add_argument("--quick", action="store_true", help="fewer repeats (for a smoke test)")
+    a = ap.parse_args()
+    os.sched_setaffinity(0, {CORE})
+    reps = 1 if a.quick else 3
+    ct = os.path.join(a.build, "tools", "ct-track")
+    report = {"date": datetime.datetime.now().isoformat(timespec="seconds"), "core": CORE}
+    lines = []
+
+    def say(s=""):
+        print(s, flush=True)
+        lines.append(s)
+
+    # 1. The library alone, per stage, memory, allocations (ct-bench).
+    with tempfile.NamedTemporaryFile(suffix=".json") as tj:
+        out = subprocess.run(["taskset", "-c", str(CORE), os.path.join(a.build, "bench", "ct-bench"),
+                              "--passes", "3" if a.quick else "15", "--json", tj.name, DATA],
+                             check=True, capture_output=True, text=True).stdout
+        report["library"] = json.load(open(tj.name))
+    say("## The library on detections (ct-bench, one core)")
+    say("")
+    say("```")
+    for l in out.rstrip().splitlines():
+        say(l)
+    say("```")
+
+    # 2. Peers on the same detections, in this run.
+    dets = load_dets()
+    _, bt = peers.bytetrack(dets, 795, 7)
+    _, nf = peers.norfair_iou(dets, 795, 7)
+    lib = {r["name"]: r for r in report["library"]["runs"]}
+    us = lib["detections 768x576"]["us_per_frame"]
+    peers_us = {"ByteTrack (supervision 0.30.9)": 1e6 * bt / 795,
+                "norfair 2.3.0 (IoU)": 1e6 * nf / 795}
+    report["peers_us_per_frame"] = peers_us
+    say("")
+    say("## Against the peers, same detections (PETS09-S2L1, 768x576), same run")
+    say("")
+    say("| tracker | us/frame | frames/s | ctrack is faster by |")
+    say("|---|---|---|---|")
+    say("| ctrack | %.2f | %.0f | 1.0x |" % (us, 1e6 / us))
+    for name, p in peers_us.items():
+        say("| %s | %.1f | %.0f | %.0fx |" % (name, p, 1e6 / p, p / us))
+
+    # 3. The whole pipeline: ct-track reading Y4M from the page cache.
+    pets = pets_y4m()
+    hd, hd_det = pets_hd(pets)
+    frames_hd = 795
+    whole = {}
+    for label, y4m, det, size in (("768x576", pets, PETS_DET, "768x576"),
+                                  ("1920x1080", hd, hd_det, "1920x1080")):
+        warm(y4m)
+        wall, rss = best_of(reps, [ct, "-q", "-d", det, "-r", "7", "-o", "/dev/null", y4m])
+        wall_det, rss_det = best_of(reps, [ct, "-q", "-d", det, "-s", size, "-r", "7",
+                                           "-o", "/dev/null"])
+        mog = mog2_ms(y4m, 100 if a.quick else 300)
+        whole[label] = {"detections_pixels_fps": 795 / wall, "detections_pixels_rss_kib": rss,
+                        "detections_fps": 795 / wall_det, "detections_rss_kib": rss_det,
+                        "mog2_ms_per_frame": mog, "mog2_fps": 1e3 / mog}
+    report["whole_pipeline"] = whole
+    say("")
+    say("## The whole pipeline: ct-track reading Y4M from the page cache, one core")
+    say("")
+    say("ct-track over all 795 PETS09-S2L1 frames with the public detections, output "
+        "discarded, best of %d; beside it OpenCV's MOG2 alone (`apply()` on one thread) "
+        "on the same frames in the same run." % reps)
+    say("")
+    say("| resolution | ct-track, detections + pixels | ct-track, detections only | "
+        "MOG2 alone | ct-track / MOG2 | peak RSS |")
+    say("|---|---|---|---|---|---|")
+    for label, w in whole.items():
+        say("| %s | %.0f frames/s | %.0f frames/s | %.0f frames/s (%.2f ms) | %.1fx | %.1f MiB |"
+            % (label, w["detections_pixels_fps"], w["detections_fps"], w["mog2_fps"],
+               w["mog2_ms_per_frame"], w["detections_pixels_fps"] / w["mog2_fps"],
+               w["detections_pixels_rss_kib"] / 1024))
+
+    # 4. Memory and allocations.
+    r = lib["detections 768x576"]
+    say("")
+    say("## Memory")
+    say("")
+    say("- A new tracker: %d bytes on the heap; after PETS09-S2L1: %d bytes "
+        "(ct_tracker_get_stats says %d)." % (r["tracker_bytes_created"],
+                                            r["tracker_bytes_after"], r["memory_bytes"]))
+    say("- Heap allocations per frame in steady state (second and later passes): %.2f "
+        "(every malloc of the process counted by ct-bench's interposed allocator)."
+        % r["allocs_per_frame"])
+    say("- Calls into OpenCV or FLANN that allocate: none; this version's engine makes no "
+        "OpenCV or FLANN call.")
+    say("- Peak RSS of ct-bench: %d KiB." % report["library"]["peak_rss_kib"])
+
+    with open(os.path.join(a.build, "bench.json"), "w") as f:
+        json.dump(report, f, indent=1)
+    if not a.quick:
+        with open(os.path.join(a.out, "bench.md"), "w") as f:
+            f.write("# Benchmarks\n\nMade by `make bench` (`bench/bench.py`) on %s, ctrack %s, "
+                    "on one core (`taskset -c 0`) of a 2-core machine. Absolute figures drift "
+                    "by up to a third between runs on shared machines; the ratios to the "
+                    "baselines measured in the same run are the figures to compare. The JSON "
+                    "is written to `build/bench.json`.\n\n"
+                    % (report["date"][:10], report["library"]["ctrack"]))
+            f.write("\n".join(lines) + "\n")
+    print("bench: wrote %s/bench.json%s" % (a.build, "" if a.quick else
+                                             " and %s/bench.md" % a.out), file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,329 @@
+/* ct-bench: times libctrack on real and synthetic detections, per stage,
+ * and counts its memory and heap allocations. Run on one core
+ * (taskset -c 0); bench/bench.py drives it beside the baselines.
+ *
+ *   ct-bench [--json FILE] [--passes N] DATA_DIR     (DATA_DIR: tests/data/mot15)
+ */
+#define _GNU_SOURCE
+#include <malloc.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "ctrack/ctrack.h"
+#include "detfile.h"
+#include "peakmem.h"
+
+/* --- counting the heap: every malloc of the process, the library's too --- */
+extern void *__libc_malloc(size_t);
+extern void *__libc_calloc(size_t, size_t);
+extern void *__libc_realloc(void *, size_t);
+extern void __libc_free(void *);
+
+static unsigned long long n_allocs;
+static long long live_bytes;
+
+void *malloc(size_t n)
+{
+    void *p = __libc_malloc(n);
+    if (p) {
+        n_allocs++;
+        live_bytes += (long long)malloc_usable_size(p);
+    }
+    return p;
+}
+
+void *calloc(size_t a, size_t b)
+{
+    void *p = __libc_calloc(a, b);
+    if (p) {
+        n_allocs++;
+        live_bytes += (long long)malloc_usable_size(p);
+    }
+    return p;
+}
+
+void *realloc(void *old, size_t n)
+{
+    long long before = old ? (long long)malloc_usable_size(old) : 0;
+    void *p = __libc_realloc(old, n);
+    if (p) {
+        n_allocs++;
+        live_bytes += (long long)malloc_usable_size(p) - before;
+    }
+    return p;
+}
+
+void free(void *p)
+{
+    if (p)
+        live_bytes -= (long long)malloc_usable_size(p);
+    __libc_free(p);
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* --- a sequence of detections in memory --- */
+typedef struct {
+    int frames;
+    size_t *start, *count; /* per frame, into dets */
+    ct_detection *dets;
+} sequence;
+
+static sequence from_detfile(ct_detfile *df, double sx, double sy)
+{
+    sequence s;
+    s.frames = df->max_frame;
+    s.start = calloc(s.frames + 1, sizeof *s.start);
+    s.count = calloc(s.frames + 1, sizeof *s.count);
+    s.dets = malloc((df->count + 1) * sizeof *s.dets);
+    df->cursor = 0;
+    size_t at = 0;
+    for (int k = 1; k <= s.frames; k++) {
+        size_t n;
+        const ct_detection *d = ct_detfile_frame(df, k, &n);
+        s.start[k] = at;
+        s.count[k] = n;
+        for (size_t i = 0; i < n; i++, at++) {
+            s.dets[at] = d[i];
+            s.dets[at].left *= sx;
+            s.dets[at].width *= sx;
+            s.dets[at].top *= sy;
+            s.dets[at].height *= sy;
+        }
+    }
+    return s;
+}
+
+/* n people walking across a w x h image at constant velocities, bouncing at
+ * the edges, with a little detector jitter. Deterministic. */
+static sequence synthetic(int people, int frames, int w, int h)
+{
+    sequence s;
+    s.frames = frames;
+    s.start = calloc(frames + 1, sizeof *s.start);
+    s.count = calloc(frames + 1, sizeof *s.count);
+    s.dets = malloc(((size_t)people * frames + 1) * sizeof *s.dets);
+    double *x = malloc(people * sizeof *x), *y = malloc(people * sizeof *y);
+    double *vx = malloc(people * sizeof *vx), *vy = malloc(people * sizeof *vy);
+    unsigned seed = 12345;
+#define RND() ((seed = seed * 1103515245u + 12345u) >> 8 & 0xFFFF) / 65536.0
+    for (int i = 0; i < people; i++) {
+        x[i] = RND() * (w - 40);
+        y[i] = RND() * (h - 90);
+        vx[i] = (RND() - 0.5) * 6;
+        vy[i] = (RND() - 0.5) * 3;
+    }
+    size_t at = 0;
+    for (int k = 1; k <= frames; k++) {
+        s.start[k] = at;
+        for (int i = 0; i < people; i++) {
+            x[i] += vx[i];
+            y[i] += vy[i];
+            if (x[i] < 0 || x[i] > w - 40) vx[i] = -vx[i];
+            if (y[i] < 0 || y[i] > h - 90) vy[i] = -vy[i];
+            ct_detection d = {(float)(x[i] + RND()), (float)(y[i] + RND()), 40, 90,
+                              (float)(0.7 + 0.3 * RND()), 0};
+            s.dets[at++] = d;
+        }
+        s.count[k] = people;
+    }
+#undef RND
+    free(x);
+    free(y);
+    free(vx);
+    free(vy);
+    return s;
+}
+
+static void free_sequence(sequence *s)
+{
+    free(s->start);
+    free(s->count);
+    free(s->dets);
+}
+
+typedef struct {
+    double us_per_frame;          /* median over passes */
+    double stage_us[CT_STATS_MAX_STAGES];
+    double allocs_per_frame;      /* in the last pass (steady state) */
+    unsigned long long tracker_bytes_created, tracker_bytes_after;
+    unsigned long long memory_bytes;
+} result;
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Runs the sequence `passes` times through one tracker (timestamps going on),
+ * with pixels (a constant I420 frame of w x h) or without. */
+static result run(const sequence *s, int passes, double fps, int w, int h, int pixels)
+{
+    result r;
+    memset(&r, 0, sizeof r);
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    long long before = live_bytes;
+    ct_tracker *t = NULL;
+    if (ct_tracker_create(&cfg, &t) != CT_OK) {
+        fprintf(stderr, "ct-bench: create failed\n");
+        exit(1);
+    }
+    r.tracker_bytes_created = (unsigned long long)(live_bytes - before);
+    uint8_t *buf = NULL;
+    ct_frame f;
+    ct_frame_default(&f, sizeof f);
+    f.width = w;
+    f.height = h;
+    if (pixels) {
+        size_t cw = (w + 1) / 2, ch = (h + 1) / 2;
+        buf = malloc((size_t)w * h + 2 * cw * ch);
+        memset(buf, 100, (size_t)w * h + 2 * cw * ch);
+        f.format = CT_FORMAT_I420;
+        f.planes[0] = buf;
+        f.planes[1] = buf + (size_t)w * h;
+        f.planes[2] = buf + (size_t)w * h + cw * ch;
+        f.strides[0] = w;
+        f.strides[1] = f.strides[2] = (int32_t)cw;
+    }
+    ct_track *out = malloc(4096 * sizeof *out);
+    double *times = malloc(passes * sizeof *times);
+    long long step = 0;
+    unsigned long long allocs_last = 0;
+    for (int p = 0; p < passes; p++) {
+        unsigned long long a0 = n_allocs;
+        double t0 = now();
+        for (int k = 1; k <= s->frames; k++, step++) {
+            f.timestamp_us = (int64_t)llround(step * 1e6 / fps);
+            size_t count;
+            if (ct_tracker_feed(t, &f, s->dets + s->start[k], s->count[k]) != CT_OK ||
+                ct_tracker_get_tracks(t, out, 4096, sizeof *out, &count) != CT_OK) {
+                fprintf(stderr, "ct-bench: %s\n", ct_tracker_last_error(t));
+                exit(1);
+            }
+        }
+        times[p] = (now() - t0) / s->frames * 1e6;
+        allocs_last = n_allocs - a0;
+    }
+    qsort(times, passes, sizeof *times, cmp_double);
+    r.us_per_frame = times[passes / 2];
+    r.allocs_per_frame = (double)allocs_last / s->frames;
+    ct_stats st;
+    st.size = sizeof st;
+    ct_tracker_get_stats(t, &st);
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
+        r.stage_us[i] = st.stage_ns[i] * 1e-3 / (double)st.steps;
+    r.memory_bytes = st.memory_bytes;
+    free(times);
+    free(out);
+    free(buf);
+    /* What the tracker holds is what destroying it gives back. */
+    long long held = live_bytes;
+    ct_tracker_destroy(t);
+    r.tracker_bytes_after = (unsigned long long)(held - live_bytes);
+        return r;
+}
+
+static void print_result(FILE *json, const char *name, const result *r, int people,
+                         int first)
+{
+    printf("%-30s %8.2f us/frame %9.0f frames/s  allocs/frame %.2f  tracker %llu B"
+           " (new %llu B)\n", name, r->us_per_frame, 1e6 / r->us_per_frame,
+           r->allocs_per_frame, r->tracker_bytes_after, r->tracker_bytes_created);
+    printf("%-30s", "");
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
+        if (ct_stage_name(i))
+            printf(" %s %.2f", ct_stage_name(i), r->stage_us[i]);
+    printf(" (us/frame)\n");
+    if (!json)
+        return;
+    fprintf(json, "%s    {\"name\": \"%s\", \"people\": %d, \"us_per_frame\": %.4f, "
+                  "\"frames_per_second\": %.1f, \"allocs_per_frame\": %.4f, "
+                  "\"tracker_bytes_created\": %llu, \"tracker_bytes_after\": %llu, "
+                  "\"memory_bytes\": %llu, \"stages_us\": {",
+            first ? "" : ",\n", name, people, r->us_per_frame, 1e6 / r->us_per_frame,
+            r->allocs_per_frame, r->tracker_bytes_created, r->tracker_bytes_after,
+            r->memory_bytes);
+    int f2 = 1;
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
+        if (ct_stage_name(i)) {
+            fprintf(json, "%s\"%s\": %.4f", f2 ? "" : ", ", ct_stage_name(i), r->stage_us[i]);
+            f2 = 0;
+        }
+    fprintf(json, "}}");
+}
+
+int main(int argc, char **argv)
+{
+    const char *json_path = NULL, *data = NULL;
+    int passes = 15;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--json") && i + 1 < argc)
+            json_path = argv[++i];
+        else if (!strcmp(argv[i], "--passes") && i + 1 < argc)
+            passes = atoi(argv[++i]);
+        else
+            data = argv[i];
+    }
+    if (!data || passes < 1) {
+        fprintf(stderr, "usage: ct-bench [--json FILE] [--passes N] DATA_DIR\n");
+        return 2;
+    }
+    FILE *json = json_path ? fopen(json_path, "w") : NULL;
+    if (json_path && !json) {
+        perror(json_path);
+        return 1;
+    }
+    char path[1024], err[512];
+    snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data);
+    ct_detfile df;
+    if (ct_detfile_load(path, &df, err, sizeof err) < 0) {
+        fprintf(stderr, "ct-bench: %s\n", err);
+        return 1;
+    }
+    if (json)
+        fprintf(json, "{\"ctrack\": \"%s\", \"runs\": [\n", ct_version_string());
+
+    printf("ctrack %s, %d passes each, median\n\n", ct_version_string(), passes);
+    printf("PETS09-S2L1 public detections (795 frames, 7 fps):\n");
+    sequence pets = from_detfile(&df, 1, 1);
+    sequence pets_hd = from_detfile(&df, 1920.0 / 768, 1080.0 / 576);
+    result r = run(&pets, passes, 7, 768, 576, 0);
+    print_result(json, "detections 768x576", &r, 0, 1);
+    r = run(&pets, passes, 7, 768, 576, 1);
+    print_result(json, "detections+pixels 768x576", &r, 0, 0);
+    r = run(&pets_hd, passes, 7, 1920, 1080, 0);
+    print_result(json, "detections 1920x1080", &r, 0, 0);
+    r = run(&pets_hd, passes, 7, 1920, 1080, 1);
+    print_result(json, "detections+pixels 1920x1080", &r, 0, 0);
+
+    printf("\nScaling with the number of people (synthetic walkers, 1920x1080, 25 fps):\n");
+    const int crowd[] = {1, 2, 5, 10, 20, 50, 100, 200};
+    for (size_t i = 0; i < sizeof crowd / sizeof crowd[0]; i++) {
+        sequence syn = synthetic(crowd[i], 300, 1920, 1080);
+        char name[64];
+        snprintf(name, sizeof name, "people %d", crowd[i]);
+        r = run(&syn, passes > 5 ? 5 : passes, 25, 1920, 1080, 0);
+        print_result(json, name, &r, crowd[i], 0);
+        free_sequence(&syn);
+    }
+    long rss = ct_peak_rss_kib();
+    printf("\npeak RSS of ct-bench: %ld KiB\n", rss);
+    if (json) {
+        fprintf(json, "\n], \"peak_rss_kib\": %ld}\n", rss);
+        fclose(json);
+    }
+    free_sequence(&pets);
+    free_sequence(&pets_hd);
+    ct_detfile_free(&df);
+    return 0;
+}

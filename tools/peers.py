@@ -1,0 +1,152 @@
+"""The trackers people reach for today, run on the same input as ctrack, for
+make eval and make bench. Each returns MOTChallenge rows
+(frame, id, left, top, width, height) and its tracking time in seconds
+(reading the input excluded).
+
+- ByteTrack as supervision 0.30.9 ships it, default thresholds.
+- norfair 2.3.0 with IoU distance (threshold 0.7, its documented value for
+  boxes), otherwise default.
+- The pixels-only baseline: OpenCV's MOG2 background subtractor (default
+  parameters, shadows dropped), a 3x3 opening and a 7x7 closing, external
+  contours as blobs (at least 400 pixels), and an IoU tracker (optimal
+  assignment, IoU >= 0.3, confirmed after 3 hits, kept 3 frames without a
+  match, reporting matched tracks).
+"""
+import time
+import warnings
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+
+def _xyxy(d):
+    return np.column_stack([d[:, 0], d[:, 1], d[:, 0] + d[:, 2], d[:, 1] + d[:, 3]])
+
+
+def bytetrack(dets_by_frame, n_frames, fps):
+    import supervision as sv
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FutureWarning)  # "removed in 0.31": we pin 0.30.9
+        tracker = sv.ByteTrack(frame_rate=fps)
+    rows, spent = [], 0.0
+    for k in range(1, n_frames + 1):
+        d = dets_by_frame.get(k, np.zeros((0, 5)))
+        det = sv.Detections(xyxy=_xyxy(d).astype(np.float32),
+                            confidence=d[:, 4].astype(np.float32),
+                            class_id=np.zeros(len(d), dtype=int))
+        t0 = time.perf_counter()
+        out = tracker.update_with_detections(det)
+        spent += time.perf_counter() - t0
+        for (x0, y0, x1, y1), tid in zip(out.xyxy, out.tracker_id):
+            rows.append((k, int(tid), x0, y0, x1 - x0, y1 - y0))
+    return rows, spent
+
+
+def norfair_iou(dets_by_frame, n_frames, fps):
+    from norfair import Detection, Tracker
+    tracker = Tracker(distance_function="iou", distance_threshold=0.7)
+    rows, spent = [], 0.0
+    for k in range(1, n_frames + 1):
+        d = dets_by_frame.get(k, np.zeros((0, 5)))
+        t0 = time.perf_counter()
+        dets = [Detection(points=np.array([[x, y], [x + w, y + h]]), scores=np.array([s, s]))
+                for x, y, w, h, s in d]
+        objs = tracker.update(detections=dets)
+        spent += time.perf_counter() - t0
+        for o in objs:
+            (x0, y0), (x1, y1) = o.estimate
+            rows.append((k, int(o.id), x0, y0, x1 - x0, y1 - y0))
+    return rows, spent
+
+
+def iou_matrix(a, b):
+    """IoU of (N, 4) and (M, 4) boxes in left, top, width, height."""
+    if len(a) == 0 or len(b) == 0:
+        return np.zeros((len(a), len(b)))
+    ax0, ay0, ax1, ay1 = a[:, 0:1], a[:, 1:2], a[:, 0:1] + a[:, 2:3], a[:, 1:2] + a[:, 3:4]
+    bx0, by0, bx1, by1 = b[:, 0], b[:, 1], b[:, 0] + b[:, 2], b[:, 1] + b[:, 3]
+    iw = np.clip(np.minimum(ax1, bx1) - np.maximum(ax0, bx0), 0, None)
+    ih = np.clip(np.minimum(ay1, by1) - np.maximum(ay0, by0), 0, None)
+    inter = iw * ih
+    return inter / (a[:, 2:3] * a[:, 3:4] + b[:, 2] * b[:, 3] - inter)
+
+
+class IoUTracker:
+    def __init__(self, min_iou=0.3, min_hits=3, max_missed=3):
+        self.min_iou, self.min_hits, self.max_missed = min_iou, min_hits, max_missed
+        self.tracks = []  # dicts: box, hits, missed, id
+        self.next_id = 1
+
+    def update(self, boxes):
+        boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+        prev = np.array([t["box"] for t in self.tracks]).reshape(-1, 4)
+        iou = iou_matrix(prev, boxes)
+        matched_t, matched_b = set(), set()
+        if iou.size:
+            r, c = linear_sum_assignment(-iou)
+            for i, j in zip(r, c):
+                if iou[i, j] >= self.min_iou:
+                    t = self.tracks[i]
+                    t["box"], t["hits"], t["missed"] = boxes[j], t["hits"] + 1, 0
+                    matched_t.add(i)
+                    matched_b.add(j)
+        for i, t in enumerate(self.tracks):
+            if i not in matched_t:
+                t["missed"] += 1
+        self.tracks = [t for t in self.tracks if t["missed"] <= self.max_missed]
+        for j in range(len(boxes)):
+            if j not in matched_b:
+                self.tracks.append({"box": boxes[j], "hits": 1, "missed": 0, "id": 0})
+        out = []
+        for t in self.tracks:
+            if t["missed"] == 0 and t["hits"] >= self.min_hits:
+                if not t["id"]:
+                    t["id"] = self.next_id
+                    self.next_id += 1
+                out.append((t["id"], t["box"]))
+        return out
+
+
+class Mog2Blobs:
+    """MOG2 foreground, morphology and contours: one box a blob."""
+
+    def __init__(self, min_area=400):
+        import cv2
+        self.cv2 = cv2
+        self.sub = cv2.createBackgroundSubtractorMOG2()
+        self.open_k = cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (3, 3))
+        self.close_k = cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (7, 7))
+        self.min_area = min_area
+
+    def boxes(self, bgr):
+        cv2 = self.cv2
+        mask = self.sub.apply(bgr)
+        mask = (mask > 200).astype(np.uint8) * 255  # 127 marks shadows
+        mask = cv2.morphologyEx(mask, cv2.MORPH_OPEN, self.open_k)
+        mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, self.close_k)
+        contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+        out = []
+        for c in contours:
+            x, y, w, h = cv2.boundingRect(c)
+            if w * h >= self.min_area:
+                out.append((x, y, w, h))
+        return out
+
+
+def mog2_iou(y4m_path, n_frames=None):
+    """The pixels-only baseline over a Y4M file."""
+    import cv2
+    from y4m import open_y4m
+    w, h, _, frames = open_y4m(y4m_path)
+    n = len(frames) if n_frames is None else min(n_frames, len(frames))
+    blobs, tracker = Mog2Blobs(), IoUTracker()
+    rows, spent = [], 0.0
+    for k in range(1, n + 1):
+        i420 = np.asarray(frames[k - 1]).reshape(h * 3 // 2, w)
+        bgr = cv2.cvtColor(i420, cv2.COLOR_YUV2BGR_I420)
+        t0 = time.perf_counter()
+        out = tracker.update(blobs.boxes(bgr))
+        spent += time.perf_counter() - t0
+        for tid, (x, y, bw, bh) in out:
+            rows.append((k, tid, x, y, bw, bh))
+    return rows, spent
