@@ -14,6 +14,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "input.h"
 #include "peakmem.h"
 
 /* --- counting the heap: every malloc of the process, the library's too --- */
@@ -150,12 +151,50 @@ static void free_sequence(sequence *s)
     free(s->dets);
 }
 
+/* Real frames in memory, for the runs with pixels. */
+typedef struct {
+    int width, height, frames;
+    uint8_t *data; /* frames * bytes */
+    size_t bytes;  /* one I420 frame */
+} video;
+
+static video load_video(const char *path, int max_frames)
+{
+    video v;
+    memset(&v, 0, sizeof v);
+    ct_input_params ip = {0, 0, CT_FORMAT_I420};
+    ct_input *in = NULL;
+    ct_input_info info;
+    char err[512];
+    if (ct_input_open(path, &ip, &in, &info, err, sizeof err) < 0) {
+        fprintf(stderr, "ct-bench: %s\n", err);
+        exit(1);
+    }
+    v.width = info.width;
+    v.height = info.height;
+    v.bytes = ct_frame_bytes(CT_FORMAT_I420, v.width, v.height);
+    v.data = malloc(v.bytes * max_frames);
+    ct_frame f;
+    while (v.frames < max_frames && ct_input_read(in, &f, err, sizeof err) == 1) {
+        if (f.format != CT_FORMAT_I420) {
+            fprintf(stderr, "ct-bench: %s is not 4:2:0 colour\n", path);
+            exit(1);
+        }
+        memcpy(v.data + v.bytes * v.frames, f.planes[0], v.bytes);
+        v.frames++;
+    }
+    ct_input_close(in);
+    return v;
+}
+
 typedef struct {
     double us_per_frame;          /* median over passes */
     double stage_us[CT_STATS_MAX_STAGES];
     double allocs_per_frame;      /* in the last pass (steady state) */
     unsigned long long tracker_bytes_created, tracker_bytes_after;
     unsigned long long memory_bytes;
+    double mean_shift_us_per_person; /* 0 without pixels */
+    unsigned long long mean_shift_runs;
 } result;
 
 static int cmp_double(const void *a, const void *b)
@@ -165,8 +204,9 @@ static int cmp_double(const void *a, const void *b)
 }
 
 /* Runs the sequence `passes` times through one tracker (timestamps going on),
- * with pixels (a constant I420 frame of w x h) or without. */
-static result run(const sequence *s, int passes, double fps, int w, int h, int pixels)
+ * with the real frames of `v` (then only as many frames as it has) or
+ * without pixels (v NULL, an image of w x h). */
+static result run(const sequence *s, int passes, double fps, int w, int h, const video *v)
 {
     result r;
     memset(&r, 0, sizeof r);
@@ -179,19 +219,14 @@ static result run(const sequence *s, int passes, double fps, int w, int h, int p
         exit(1);
     }
     r.tracker_bytes_created = (unsigned long long)(live_bytes - before);
-    uint8_t *buf = NULL;
     ct_frame f;
     ct_frame_default(&f, sizeof f);
     f.width = w;
     f.height = h;
-    if (pixels) {
-        size_t cw = (w + 1) / 2, ch = (h + 1) / 2;
-        buf = malloc((size_t)w * h + 2 * cw * ch);
-        memset(buf, 100, (size_t)w * h + 2 * cw * ch);
+    const int frames = v && v->frames < s->frames ? v->frames : s->frames;
+    if (v) {
+        size_t cw = (w + 1) / 2;
         f.format = CT_FORMAT_I420;
-        f.planes[0] = buf;
-        f.planes[1] = buf + (size_t)w * h;
-        f.planes[2] = buf + (size_t)w * h + cw * ch;
         f.strides[0] = w;
         f.strides[1] = f.strides[2] = (int32_t)cw;
     }
@@ -202,8 +237,15 @@ static result run(const sequence *s, int passes, double fps, int w, int h, int p
     for (int p = 0; p < passes; p++) {
         unsigned long long a0 = n_allocs;
         double t0 = now();
-        for (int k = 1; k <= s->frames; k++, step++) {
+        for (int k = 1; k <= frames; k++, step++) {
             f.timestamp_us = (int64_t)llround(step * 1e6 / fps);
+            if (v) {
+                const uint8_t *p = v->data + v->bytes * (k - 1);
+                size_t luma = (size_t)w * h, chroma = (size_t)((w + 1) / 2) * ((h + 1) / 2);
+                f.planes[0] = p;
+                f.planes[1] = p + luma;
+                f.planes[2] = p + luma + chroma;
+            }
             size_t count;
             if (ct_tracker_feed(t, &f, s->dets + s->start[k], s->count[k]) != CT_OK ||
                 ct_tracker_get_tracks(t, out, 4096, sizeof *out, &count) != CT_OK) {
@@ -211,21 +253,23 @@ static result run(const sequence *s, int passes, double fps, int w, int h, int p
                 exit(1);
             }
         }
-        times[p] = (now() - t0) / s->frames * 1e6;
+        times[p] = (now() - t0) / frames * 1e6;
         allocs_last = n_allocs - a0;
     }
     qsort(times, passes, sizeof *times, cmp_double);
     r.us_per_frame = times[passes / 2];
-    r.allocs_per_frame = (double)allocs_last / s->frames;
+    r.allocs_per_frame = (double)allocs_last / frames;
     ct_stats st;
     st.size = sizeof st;
     ct_tracker_get_stats(t, &st);
     for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
         r.stage_us[i] = st.stage_ns[i] * 1e-3 / (double)st.steps;
     r.memory_bytes = st.memory_bytes;
+    r.mean_shift_runs = st.mean_shift_runs;
+    if (st.mean_shift_runs)
+        r.mean_shift_us_per_person = st.stage_ns[CT_STAGE_MEAN_SHIFT] * 1e-3 / st.mean_shift_runs;
     free(times);
     free(out);
-    free(buf);
     /* What the tracker holds is what destroying it gives back. */
     long long held = live_bytes;
     ct_tracker_destroy(t);
@@ -244,15 +288,19 @@ static void print_result(FILE *json, const char *name, const result *r, int peop
         if (ct_stage_name(i))
             printf(" %s %.2f", ct_stage_name(i), r->stage_us[i]);
     printf(" (us/frame)\n");
+    if (r->mean_shift_runs)
+        printf("%-30s mean shift %.2f us per person per frame (%llu windows)\n", "",
+               r->mean_shift_us_per_person, r->mean_shift_runs);
     if (!json)
         return;
     fprintf(json, "%s    {\"name\": \"%s\", \"people\": %d, \"us_per_frame\": %.4f, "
                   "\"frames_per_second\": %.1f, \"allocs_per_frame\": %.4f, "
                   "\"tracker_bytes_created\": %llu, \"tracker_bytes_after\": %llu, "
-                  "\"memory_bytes\": %llu, \"stages_us\": {",
+                  "\"memory_bytes\": %llu, \"mean_shift_us_per_person\": %.4f, "
+                  "\"stages_us\": {",
             first ? "" : ",\n", name, people, r->us_per_frame, 1e6 / r->us_per_frame,
             r->allocs_per_frame, r->tracker_bytes_created, r->tracker_bytes_after,
-            r->memory_bytes);
+            r->memory_bytes, r->mean_shift_us_per_person);
     int f2 = 1;
     for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
         if (ct_stage_name(i)) {
@@ -264,18 +312,23 @@ static void print_result(FILE *json, const char *name, const result *r, int peop
 
 int main(int argc, char **argv)
 {
-    const char *json_path = NULL, *data = NULL;
+    const char *json_path = NULL, *data = NULL, *video_path = NULL, *video_hd_path = NULL;
     int passes = 15;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--json") && i + 1 < argc)
             json_path = argv[++i];
+        else if (!strcmp(argv[i], "--video") && i + 1 < argc)
+            video_path = argv[++i];
+        else if (!strcmp(argv[i], "--video-hd") && i + 1 < argc)
+            video_hd_path = argv[++i];
         else if (!strcmp(argv[i], "--passes") && i + 1 < argc)
             passes = atoi(argv[++i]);
         else
             data = argv[i];
     }
     if (!data || passes < 1) {
-        fprintf(stderr, "usage: ct-bench [--json FILE] [--passes N] DATA_DIR\n");
+        fprintf(stderr, "usage: ct-bench [--json FILE] [--passes N] [--video PETS09.y4m]\n"
+                        "                [--video-hd PETS09-1080p.y4m] DATA_DIR\n");
         return 2;
     }
     FILE *json = json_path ? fopen(json_path, "w") : NULL;
@@ -297,14 +350,23 @@ int main(int argc, char **argv)
     printf("PETS09-S2L1 public detections (795 frames, 7 fps):\n");
     sequence pets = from_detfile(&df, 1, 1);
     sequence pets_hd = from_detfile(&df, 1920.0 / 768, 1080.0 / 576);
-    result r = run(&pets, passes, 7, 768, 576, 0);
+    result r = run(&pets, passes, 7, 768, 576, NULL);
     print_result(json, "detections 768x576", &r, 0, 1);
-    r = run(&pets, passes, 7, 768, 576, 1);
-    print_result(json, "detections+pixels 768x576", &r, 0, 0);
-    r = run(&pets_hd, passes, 7, 1920, 1080, 0);
+    r = run(&pets_hd, passes, 7, 1920, 1080, NULL);
     print_result(json, "detections 1920x1080", &r, 0, 0);
-    r = run(&pets_hd, passes, 7, 1920, 1080, 1);
-    print_result(json, "detections+pixels 1920x1080", &r, 0, 0);
+    /* With the real frames: the first 200 (768x576) and 60 (1920x1080). */
+    if (video_path) {
+        video v = load_video(video_path, 200);
+        r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &v);
+        print_result(json, "detections+pixels 768x576", &r, 0, 0);
+        free(v.data);
+    }
+    if (video_hd_path) {
+        video v = load_video(video_hd_path, 60);
+        r = run(&pets_hd, passes > 5 ? 5 : passes, 7, v.width, v.height, &v);
+        print_result(json, "detections+pixels 1920x1080", &r, 0, 0);
+        free(v.data);
+    }
 
     printf("\nScaling with the number of people (synthetic walkers, 1920x1080, 25 fps):\n");
     const int crowd[] = {1, 2, 5, 10, 20, 50, 100, 200};
@@ -312,7 +374,7 @@ int main(int argc, char **argv)
         sequence syn = synthetic(crowd[i], 300, 1920, 1080);
         char name[64];
         snprintf(name, sizeof name, "people %d", crowd[i]);
-        r = run(&syn, passes > 5 ? 5 : passes, 25, 1920, 1080, 0);
+        r = run(&syn, passes > 5 ? 5 : passes, 25, 1920, 1080, NULL);
         print_result(json, name, &r, crowd[i], 0);
         free_sequence(&syn);
     }

@@ -28,6 +28,10 @@ ct_config default_config()
     c.detection_noise = 0.05f;
     c.clip_boxes = 0;
     c.max_tracks = 1000;
+    c.mean_shift = 1;
+    c.mean_shift_min_similarity = 0.7f;
+    c.mean_shift_max_time = 1.0;
+    c.model_learning_rate = 0.2f;
     return c;
 }
 
@@ -109,6 +113,22 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     if (c.max_tracks < 1 || c.max_tracks > 100000)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.max_tracks: %d is not in [1, 100000]", (int)c.max_tracks);
+    if (c.mean_shift != 0 && c.mean_shift != 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.mean_shift: %d is not 0 or 1", (int)c.mean_shift);
+    if (!in_range(c.mean_shift_min_similarity, 0, 1) || c.mean_shift_min_similarity == 0 ||
+        c.mean_shift_min_similarity == 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.mean_shift_min_similarity: %g is not in (0, 1)",
+                    (double)c.mean_shift_min_similarity);
+    if (!in_range(c.mean_shift_max_time, 0, 3600))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.mean_shift_max_time: %g s is not in [0, 3600]",
+                    c.mean_shift_max_time);
+    if (!in_range(c.model_learning_rate, 0, 1))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.model_learning_rate: %g is not in [0, 1]",
+                    (double)c.model_learning_rate);
     if (out)
         *out = c;
     return CT_OK;

@@ -8,8 +8,9 @@
 
 namespace ctrack {
 
-// The first published sizeof(ct_config): callers' structs are at least this.
-constexpr size_t kConfigSizeV1 = sizeof(ct_config);
+// The first published sizeof(ct_config) (0.1.0, up to max_tracks): callers'
+// structs are at least this; fields after it take their defaults.
+constexpr size_t kConfigSizeV1 = offsetof(ct_config, mean_shift);
 
 ct_config default_config();
 

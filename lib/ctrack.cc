@@ -2,6 +2,8 @@
 // engine inside a catch-all, so no C++ exception ever crosses into C.
 #include "ctrack/ctrack.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -152,7 +154,8 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
                             (long long)f.timestamp_us, (long long)e.last_time());
     const uint64_t validate_ns = sw.lap();
     st = guarded(tracker, [&] {
-        e.step(f.timestamp_us, ctrack::ImageSize{f.width, f.height}, dets, n);
+        e.step(f.timestamp_us, ctrack::Planes::of(f), ctrack::ImageSize{f.width, f.height},
+               dets, n);
         return CT_OK;
     });
     if (st == CT_OK) {
@@ -203,6 +206,7 @@ const char *ct_stage_name(int stage)
     case CT_STAGE_ASSOCIATE: return "associate";
     case CT_STAGE_LIFECYCLE: return "lifecycle";
     case CT_STAGE_REPORT: return "report";
+    case CT_STAGE_MEAN_SHIFT: return "mean_shift";
     default: return nullptr;
     }
 }
@@ -215,12 +219,13 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     if (!stats)
         return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
                             "stats: NULL pointer");
-    const size_t size = stats->size;
-    if (size < sizeof(ct_stats) || size > (1u << 16))
+    // The first published ct_stats (0.1.0) ended with memory_bytes.
+    const size_t size = stats->size, v1 = offsetof(ct_stats, mean_shift_runs);
+    if (size < v1 || size > (1u << 16))
         return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
-                            "stats.size: %zu is not sizeof(ct_stats) (%zu, or more from a "
-                            "newer header)",
-                            size, sizeof(ct_stats));
+                            "stats.size: %zu is not sizeof(ct_stats) (%zu, or %zu from an "
+                            "older header, or more from a newer one)",
+                            size, sizeof(ct_stats), v1);
     ct_stats s = {};
     s.size = size;
     s.steps = tracker->steps;
@@ -231,8 +236,9 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     s.stage_ns[CT_STAGE_VALIDATE] = tracker->validate_ns;
     s.live_tracks = e.live_tracks();
     s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes();
+    s.mean_shift_runs = e.mean_shift_runs();
     std::memset(static_cast<void *>(stats), 0, size);
-    std::memcpy(static_cast<void *>(stats), &s, sizeof s);
+    std::memcpy(static_cast<void *>(stats), &s, std::min(size, sizeof s));
     return CT_OK;
 }
 

@@ -16,6 +16,15 @@ constexpr double kInitialSpeedSd = 1.0;
 // this fraction of the centre's.
 constexpr double kSizeNoiseRatio = 0.5;
 constexpr double kMinSide = 1.0;
+// A position from mean shift is trusted this many times less than a
+// detection's.
+constexpr double kFollowNoiseRatio = 2.0;
+constexpr double kFollowSizeNoiseRatio = 4.0;
+// A track is occluded when another covers this much of its box: its colour
+// model is then left as it is.
+constexpr double kOccludedFraction = 0.2;
+// Mean shift follows a track only while this much of its box is in the image.
+constexpr double kMinInside = 0.9;
 
 } // namespace
 
@@ -31,16 +40,25 @@ double iou(const Box &a, const Box &b)
     return uni > 0 ? inter / uni : 0;
 }
 
-Box Track::box() const
+// The part of a box that lies in the image.
+static double inside_fraction(const Box &b, const Planes &img)
 {
-    double bw = std::max(w.x, kMinSide), bh = std::max(h.x, kMinSide);
-    return Box{cx.x - bw / 2, cy.x - bh / 2, bw, bh};
+    double iw = std::min<double>(img.width, b.left + b.width) - std::max(0.0, b.left);
+    double ih = std::min<double>(img.height, b.top + b.height) - std::max(0.0, b.top);
+    return iw > 0 && ih > 0 ? iw * ih / (b.width * b.height) : 0;
 }
 
 static Box det_box(const ct_detection &d)
 {
     return Box{d.left, d.top, d.width, d.height};
 }
+
+Box Track::box() const
+{
+    double bw = std::max(w.x, kMinSide), bh = std::max(h.x, kMinSide);
+    return Box{cx.x - bw / 2, cy.x - bh / 2, bw, bh};
+}
+
 
 Engine::Engine(const ct_config &cfg) : cfg_(cfg) {}
 
@@ -63,6 +81,102 @@ void Engine::predict(double dt)
         t.h.predict(dt, accel * kSizeNoiseRatio);
         t.age++;
         t.det_index = -1;
+        t.followed = false;
+        t.ms = MeanShiftResult();
+        t.cue = t.box();
+    }
+}
+
+// Mean shift from each confirmed track's prediction: where the pixels say
+// the person is, before the detections are compared.
+void Engine::refine(const Planes &img)
+{
+    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || !t.model.valid)
+            continue;
+        Box b = t.box();
+        t.ms = ms_.track(img, t.cx.x, t.cy.x, b.width, b.height, t.model, ms_params_);
+        ms_runs_++;
+        if (t.ms.rho >= min_rho)
+            t.cue = Box{t.ms.cx - b.width / 2, t.ms.cy - b.height / 2, b.width, b.height};
+    }
+}
+
+// A confirmed track that no detection claimed is carried by mean shift while
+// the pixels hold it; otherwise it will be lost.
+void Engine::follow_or_lose(const Planes &img, int64_t t_us)
+{
+    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
+            t.ms.iterations == 0 || t.ms.rho < min_rho)
+            continue;
+        if ((double)(t_us - t.last_update_us) * 1e-6 > cfg_.mean_shift_max_time)
+            continue;
+        // Behind another person the window sees the occluder: coast instead.
+        if (occluded(i))
+            continue;
+        // Leaving the image: the detector stops seeing a person cut by the
+        // border, and the part left in the window does not hold them.
+        if (inside_fraction(t.box(), img) < kMinInside)
+            continue;
+        ms_.scale(img, t.model, ms_params_, &t.ms);
+        if (t.ms.rho < min_rho)
+            continue;
+        double sd = kFollowNoiseRatio * cfg_.detection_noise * std::max(t.h.x, kMinSide);
+        t.cx.update(t.ms.cx, sd);
+        t.cy.update(t.ms.cy, sd);
+        // The scale mean shift found moves the size only slowly (Comaniciu's
+        // blend of the new and old size): small windows drift to a part of
+        // the person, and their similarity stays high.
+        t.w.update(t.ms.width, sd * kFollowSizeNoiseRatio);
+        t.h.update(t.ms.height, sd * kFollowSizeNoiseRatio);
+        // Without detections nothing measures how the size changes: hold
+        // it, rather than let a trend shrink the box to a part of the person.
+        t.w.v = 0;
+        t.h.v = 0;
+        t.followed = true;
+    }
+}
+
+bool Engine::occluded(size_t i) const
+{
+    const Box a = tracks_[i].box();
+    const double area = a.width * a.height;
+    for (size_t j = 0; j < tracks_.size(); j++) {
+        if (j == i || tracks_[j].state == CT_TRACK_TENTATIVE)
+            continue;
+        const Box b = tracks_[j].box();
+        double iw = std::min(a.left + a.width, b.left + b.width) - std::max(a.left, b.left);
+        double ih = std::min(a.top + a.height, b.top + b.height) - std::max(a.top, b.top);
+        if (iw > 0 && ih > 0 && iw * ih > kOccludedFraction * area)
+            return true;
+    }
+    return false;
+}
+
+// Colour models: made when a track is confirmed, then learnt (eq. 9) from
+// the boxes that detections confirm, unless another track overlaps the box
+// or the box no longer looks like the model.
+void Engine::learn_models(const Planes &img)
+{
+    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
+    const int mu = (int)std::lround(cfg_.model_learning_rate * 256);
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0)
+            continue;
+        Box b = t.box();
+        if (!t.model.valid || t.model.color != img.color) {
+            ms_.build(img, t.cx.x, t.cy.x, b.width, b.height, &t.model);
+            continue;
+        }
+        if (mu == 0 || occluded(i))
+            continue;
+        ms_.learn(img, t.cx.x, t.cy.x, b.width, b.height, mu, min_rho, &t.model);
     }
 }
 
@@ -118,7 +232,7 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
         return;
     cost_.resize((size_t)n * m);
     for (int i = 0; i < n; i++) {
-        Box tb = tracks_[track_idx[i]].box();
+        Box tb = tracks_[track_idx[i]].cue;
         for (int j = 0; j < m; j++)
             cost_[(size_t)i * m + j] = 1.0 - iou(tb, det_box(dets[det_idx[j]]));
     }
@@ -139,7 +253,8 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
                   det_idx.end());
 }
 
-void Engine::step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n)
+void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
+                  size_t n)
 {
     saved_tracks_ = tracks_;
     saved_reported_ = reported_;
@@ -147,7 +262,7 @@ void Engine::step(int64_t t_us, ImageSize image, const ct_detection *dets, size_
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
     try {
-        step_unguarded(t_us, image, dets, n);
+        step_unguarded(t_us, img, image, dets, n);
     } catch (...) {
         tracks_ = saved_tracks_;
         reported_ = saved_reported_;
@@ -158,8 +273,10 @@ void Engine::step(int64_t t_us, ImageSize image, const ct_detection *dets, size_
     }
 }
 
-void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n)
+void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
+                            const ct_detection *dets, size_t n)
 {
+    const bool pixels = cfg_.mean_shift && !img.empty();
     const bool first = !has_time_;
     const double dt = first ? 0.0 : (double)(t_us - last_us_) * 1e-6;
     last_us_ = t_us;
@@ -168,6 +285,10 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
     Stopwatch sw;
     predict(dt);
     stage_ns_[CT_STAGE_PREDICT] += sw.lap();
+    if (pixels) {
+        refine(img);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
 
     det_used_.assign(n, 0);
     pool_dets_.clear();
@@ -204,13 +325,17 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
     stage_ns_[CT_STAGE_ASSOCIATE] += sw.lap();
+    if (pixels) {
+        follow_or_lose(img, t_us);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
 
     // Lifecycle of the tracks no detection updated.
     size_t k = 0;
     for (size_t i = 0; i < tracks_.size(); i++) {
         Track &t = tracks_[i];
         bool keep = true;
-        if (t.last_update_us != t_us) {
+        if (t.last_update_us != t_us && !t.followed) {
             if (t.state == CT_TRACK_TENTATIVE) {
                 keep = false;
             } else {
@@ -236,6 +361,10 @@ void Engine::step_unguarded(int64_t t_us, ImageSize image, const ct_detection *d
         start_track(dets[j], j, t_us, first);
     }
     stage_ns_[CT_STAGE_LIFECYCLE] += sw.lap();
+    if (pixels) {
+        learn_models(img);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
 
     report(t_us, image);
     stage_ns_[CT_STAGE_REPORT] += sw.lap();
@@ -249,7 +378,7 @@ size_t Engine::memory_bytes() const
            cost_.capacity() * sizeof(double) +
            (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
             low_dets_.capacity()) * sizeof(int) +
-           det_used_.capacity() + assigner_.memory_bytes();
+           det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes();
 }
 
 void Engine::report(int64_t t_us, ImageSize image)
@@ -281,7 +410,9 @@ void Engine::report(int64_t t_us, ImageSize image)
         o.velocity_x = (float)t.cx.v;
         o.velocity_y = (float)t.cy.v;
         double conf = std::min(1.0, std::max(0.0, (double)t.score));
-        if (t.state == CT_TRACK_LOST && cfg_.lost_lifetime > 0)
+        if (t.followed)
+            conf = (double)t.ms.rho / kQ16;
+        else if (t.state == CT_TRACK_LOST && cfg_.lost_lifetime > 0)
             conf *= std::max(0.0, 1.0 - since / cfg_.lost_lifetime);
         o.confidence = (float)conf;
         o.state = t.state;

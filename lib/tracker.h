@@ -7,7 +7,9 @@
 
 #include "ctrack/ctrack.h"
 #include "assign.h"
+#include "meanshift.h"
 #include "motion.h"
+#include "planes.h"
 
 namespace ctrack {
 
@@ -26,6 +28,13 @@ struct Track {
     int det_index = -1;
     int class_id = 0;
     float score = 0;
+    // The box association compares with detections this step: the
+    // prediction, or where mean shift moved it.
+    Box cue{0, 0, 0, 0};
+    // This step's mean shift result, when it ran (rho in Q16).
+    bool followed = false;
+    MeanShiftResult ms;
+    ColorModel model;
 
     Box box() const;
 };
@@ -40,13 +49,16 @@ class Engine {
 public:
     explicit Engine(const ct_config &cfg);
 
-    // One step; timestamps are checked by the caller. If it throws, the
-    // engine is as it was before the call.
-    void step(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n);
+    // One step; timestamps are checked by the caller. `img` is empty when
+    // the frame has no pixels. If it throws, the engine is as it was before
+    // the call.
+    void step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
+              size_t n);
     void reset();
 
     const std::vector<ct_track> &reported() const { return reported_; }
     size_t live_tracks() const { return tracks_.size(); }
+    uint64_t mean_shift_runs() const { return ms_runs_; }
     size_t memory_bytes() const;
     // Nanoseconds spent in each ct_stage, summed over the steps.
     const uint64_t *stage_ns() const { return stage_ns_; }
@@ -54,8 +66,13 @@ public:
     int64_t last_time() const { return last_us_; }
 
 private:
-    void step_unguarded(int64_t t_us, ImageSize image, const ct_detection *dets, size_t n);
+    void step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
+                        const ct_detection *dets, size_t n);
     void predict(double dt);
+    void refine(const Planes &img);
+    void follow_or_lose(const Planes &img, int64_t t_us);
+    void learn_models(const Planes &img);
+    bool occluded(size_t i) const;
     void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
                const ct_detection *dets, double min_iou);
     void update(Track &t, const ct_detection &d, int index, int64_t t_us);
@@ -63,6 +80,7 @@ private:
     void report(int64_t t_us, ImageSize image);
 
     uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
+    uint64_t ms_runs_ = 0;
     ct_config cfg_;
     std::vector<Track> tracks_;
     std::vector<ct_track> reported_;
@@ -78,6 +96,8 @@ private:
 
     // Scratch reused from step to step.
     Assigner assigner_;
+    MeanShift ms_;
+    MeanShiftParams ms_params_;
     std::vector<double> cost_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;

@@ -39,6 +39,10 @@ static const param_def params[] = {
     {"detection_noise", 'f', offsetof(ct_config, detection_noise), "detection noise, box heights"},
     {"clip_boxes", 'i', offsetof(ct_config, clip_boxes), "1: clip reported boxes to the image"},
     {"max_tracks", 'i', offsetof(ct_config, max_tracks), "upper bound on live tracks"},
+    {"mean_shift", 'i', offsetof(ct_config, mean_shift), "1: follow tracks on the pixels"},
+    {"mean_shift_min_similarity", 'f', offsetof(ct_config, mean_shift_min_similarity), "similarity under which a track is lost"},
+    {"mean_shift_max_time", 'd', offsetof(ct_config, mean_shift_max_time), "seconds mean shift carries a track"},
+    {"model_learning_rate", 'f', offsetof(ct_config, model_learning_rate), "colour model learning rate (eq. 9)"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)
@@ -80,12 +84,13 @@ static void usage(FILE *out)
             "      --progress         print progress on standard error (default when it is\n"
             "                         a terminal)\n"
             "  -q, --quiet            no progress\n"
+            "      --stats            print the library's time per stage at the end\n"
             "  -h, --help             this help\n"
             "  -V, --version          print the version\n"
             "\n"
             "parameters (defaults):\n");
     for (size_t i = 0; i < sizeof params / sizeof params[0]; i++) {
-        fprintf(out, "  %-20s ", params[i].name);
+        fprintf(out, "  %-26s ", params[i].name);
         print_param_value(out, &cfg, &params[i]);
         fprintf(out, "  %s\n", params[i].help);
     }
@@ -140,6 +145,26 @@ static int parse_size(const char *s, int *w, int *h)
     return 0;
 }
 
+/* The library's own timers: per stage, per frame and, for mean shift, per
+ * person. */
+static void print_stats(const ct_tracker *tracker)
+{
+    ct_stats st;
+    st.size = sizeof st;
+    if (ct_tracker_get_stats(tracker, &st) != CT_OK || st.steps == 0)
+        return;
+    fprintf(stderr, "ct-track: %llu steps, %.2f us a step in ct_tracker_feed\n",
+            (unsigned long long)st.steps, st.feed_ns * 1e-3 / st.steps);
+    for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
+        if (ct_stage_name(i))
+            fprintf(stderr, "ct-track:   %-12s %9.2f us a step\n", ct_stage_name(i),
+                    st.stage_ns[i] * 1e-3 / st.steps);
+    if (st.mean_shift_runs)
+        fprintf(stderr, "ct-track:   mean shift %.2f us per person per step (%llu)\n",
+                st.stage_ns[CT_STAGE_MEAN_SHIFT] * 1e-3 / st.mean_shift_runs,
+                (unsigned long long)st.mean_shift_runs);
+}
+
 static double now_seconds(void)
 {
     struct timespec ts;
@@ -157,7 +182,8 @@ int main(int argc, char **argv)
     uint32_t format = CT_FORMAT_I420;
     double fps = 0;
 
-    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY };
+    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS };
+    int stats = 0;
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
         {"size", required_argument, NULL, 's'},
@@ -168,6 +194,7 @@ int main(int argc, char **argv)
         {"overlay", required_argument, NULL, OPT_OVERLAY},
         {"param", required_argument, NULL, 'p'},
         {"progress", no_argument, NULL, OPT_PROGRESS},
+        {"stats", no_argument, NULL, OPT_STATS},
         {"quiet", no_argument, NULL, 'q'},
         {"help", no_argument, NULL, 'h'},
         {"version", no_argument, NULL, 'V'},
@@ -210,6 +237,7 @@ int main(int argc, char **argv)
                 return EXIT_USAGE;
             break;
         case OPT_PROGRESS: progress = 1; break;
+        case OPT_STATS: stats = 1; break;
         case 'q': progress = 0; break;
         case 'h': usage(stdout); return 0;
         case 'V': printf("ct-track %s\n", ct_version_string()); return 0;
@@ -394,6 +422,8 @@ int main(int argc, char **argv)
             fprintf(stderr, ", peak memory %.1f MiB", rss / 1024.0);
         fputc('\n', stderr);
     }
+    if (stats)
+        print_stats(tracker);
     if (df.max_frame > k)
         fprintf(stderr, "ct-track: warning: detections go to frame %d, the video has %lld\n",
                 df.max_frame, k);

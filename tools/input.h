@@ -8,6 +8,10 @@
 
 #include "ctrack/ctrack.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct ct_input ct_input;
 
 typedef struct ct_input_params {
@@ -40,5 +44,9 @@ void ct_input_close(ct_input *in);
 
 /* Bytes of one frame of the given format and size (0 for bad values). */
 size_t ct_frame_bytes(uint32_t format, int width, int height);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

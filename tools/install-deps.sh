@@ -4,7 +4,7 @@
 #   install-deps.sh --check  exit 1 if something is missing, installing nothing
 set -eu
 packages="gcc g++ make pkg-config meson ninja-build check python3 python3-venv ffmpeg
-libopencv-core-dev libopencv-imgproc-dev libflann-dev liblz4-dev"
+libopencv-core-dev libopencv-imgproc-dev libopencv-video-dev libflann-dev liblz4-dev"
 
 missing=""
 for p in $packages; do

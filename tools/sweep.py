@@ -2,7 +2,7 @@
 """Sweeps one tracker parameter at a time around the defaults on the
 MOTChallenge public detections and prints MOTA / IDF1 per sequence.
 
-    sweep.py BUILD_DIR DATA_DIR NAME=V1,V2,... [NAME=...] [--base NAME=V ...]
+    sweep.py BUILD_DIR DATA_DIR NAME=V1,V2,... [NAME=...] [--base NAME=V ...] [--pixels]
 
 DATA_DIR holds <SEQ>/det/det.txt, <SEQ>/gt/gt.txt and <SEQ>/seqinfo.ini.
 The same parameters are used for every sequence: the choice is made on the
@@ -29,7 +29,7 @@ def sequences(data_dir):
             yield name, int(s["imWidth"]), int(s["imHeight"]), float(s["frameRate"])
 
 
-def run(build, data_dir, params):
+def run(build, data_dir, params, pixels=False):
     out = {}
     for name, w, h, fps in sequences(data_dir):
         with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
@@ -39,6 +39,9 @@ def run(build, data_dir, params):
                "-s", "%dx%d" % (w, h), "-r", str(fps), "-o", tracks]
         for p in params:
             cmd += ["-p", p]
+        if pixels:
+            from eval import video
+            cmd.append(video(name))
         subprocess.run(cmd, check=True)
         out[name] = score(os.path.join(data_dir, name, "gt", "gt.txt"), tracks)
         os.unlink(tracks)
@@ -51,7 +54,9 @@ def main():
     ap.add_argument("data")
     ap.add_argument("sweeps", nargs="*")
     ap.add_argument("--base", action="append", default=[])
-    a = ap.parse_args()
+    ap.add_argument("--pixels", action="store_true",
+                    help="give ct-track the frames too (cached Y4M, as make eval makes them)")
+    a = ap.parse_intermixed_args()
     names = [n for n, *_ in sequences(a.data)]
     print("%-28s" % "parameter" + "".join("%22s" % n for n in names) + "%14s" % "mean")
     def line(label, r):
@@ -60,11 +65,12 @@ def main():
         cells = "".join("%10.1f/%5.1f/%3d  " % (r[n]["MOTA"], r[n]["IDF1"], r[n]["IDsw"])
                         for n in names)
         print("%-28s%s%7.1f/%5.1f" % (label, cells, mota, idf1), flush=True)
-    line("base " + " ".join(a.base), run(a.build, a.data, a.base))
+    line("base " + " ".join(a.base), run(a.build, a.data, a.base, a.pixels))
     for sw in a.sweeps:
         name, values = sw.split("=", 1)
         for v in values.split(","):
-            line("%s=%s" % (name, v), run(a.build, a.data, a.base + ["%s=%s" % (name, v)]))
+            line("%s=%s" % (name, v),
+                 run(a.build, a.data, a.base + ["%s=%s" % (name, v)], a.pixels))
 
 
 if __name__ == "__main__":

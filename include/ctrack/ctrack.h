@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 1
+#define CT_VERSION_MINOR 2
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -127,6 +127,20 @@ typedef struct ct_config {
     /* Upper bound on live tracks (tentative, confirmed and lost); when it is
      * reached, new detections do not start tracks. */
     int32_t max_tracks;
+
+    /* Added in 0.2.0. */
+
+    /* Non-zero: with pixels, each confirmed track keeps a colour model and
+     * multiscale mean shift refines its predicted box before association
+     * and follows it when its detection is missing. */
+    int32_t mean_shift;
+    /* Bhattacharyya coefficient, in (0, 1), under which the pixels no longer
+     * hold a track: it becomes lost. */
+    float mean_shift_min_similarity;
+    /* Seconds mean shift may carry a track without a detection. */
+    double mean_shift_max_time;
+    /* Learning rate of the colour model (the paper's eq. 9), in [0, 1]. */
+    float model_learning_rate;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
@@ -185,8 +199,10 @@ typedef struct ct_detection {
 
 typedef enum ct_track_state {
     CT_TRACK_TENTATIVE = 0, /* not yet confirmed; never reported */
-    CT_TRACK_CONFIRMED = 1, /* updated by a detection this step */
-    CT_TRACK_LOST = 2       /* no detection this step; box predicted */
+    CT_TRACK_CONFIRMED = 1, /* updated this step: by a detection, or (no
+                               detection, detection_index -1) followed on
+                               the pixels by mean shift */
+    CT_TRACK_LOST = 2       /* neither; box predicted by the motion model */
 } ct_track_state;
 
 typedef struct ct_track {
@@ -244,7 +260,8 @@ typedef enum ct_stage {
     CT_STAGE_PREDICT = 1,   /* motion prediction of every track */
     CT_STAGE_ASSOCIATE = 2, /* costs and assignment */
     CT_STAGE_LIFECYCLE = 3, /* updates, losses, removals, births */
-    CT_STAGE_REPORT = 4     /* building the reported tracks */
+    CT_STAGE_REPORT = 4,    /* building the reported tracks */
+    CT_STAGE_MEAN_SHIFT = 5 /* colour models and mean shift (0.2.0) */
 } ct_stage;
 
 #define CT_STATS_MAX_STAGES 16
@@ -263,6 +280,10 @@ typedef struct ct_stats {
     uint64_t live_tracks;
     /* Heap bytes the tracker holds now (its buffers' capacity). */
     uint64_t memory_bytes;
+    /* Added in 0.2.0: windows mean shift ran on (one a confirmed track a
+     * step with pixels), so stage_ns[CT_STAGE_MEAN_SHIFT] / mean_shift_runs
+     * is its cost per person. */
+    uint64_t mean_shift_runs;
 } ct_stats;
 
 /* Fills *stats (stats->size must be set). Resetting the tracker does not

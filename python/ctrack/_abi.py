@@ -49,6 +49,10 @@ class Config(C.Structure):
         ("detection_noise", C.c_float),
         ("clip_boxes", C.c_int32),
         ("max_tracks", C.c_int32),
+        ("mean_shift", C.c_int32),
+        ("mean_shift_min_similarity", C.c_float),
+        ("mean_shift_max_time", C.c_double),
+        ("model_learning_rate", C.c_float),
     ]
 
 
@@ -107,6 +111,7 @@ class Stats(C.Structure):
         ("stage_ns", C.c_uint64 * STATS_MAX_STAGES),
         ("live_tracks", C.c_uint64),
         ("memory_bytes", C.c_uint64),
+        ("mean_shift_runs", C.c_uint64),
     ]
 
 

@@ -17,6 +17,8 @@ int main(void)
     FIELD(ct_config, lost_lifetime); FIELD(ct_config, report_lost_time);
     FIELD(ct_config, motion_noise); FIELD(ct_config, detection_noise);
     FIELD(ct_config, clip_boxes); FIELD(ct_config, max_tracks);
+    FIELD(ct_config, mean_shift); FIELD(ct_config, mean_shift_min_similarity);
+    FIELD(ct_config, mean_shift_max_time); FIELD(ct_config, model_learning_rate);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
@@ -38,6 +40,7 @@ int main(void)
     printf("}, \"Stats\": {\"sizeof\": %zu, ", sizeof(ct_stats));
     FIELD(ct_stats, size); FIELD(ct_stats, steps); FIELD(ct_stats, feed_ns);
     FIELD(ct_stats, stage_ns); FIELD(ct_stats, live_tracks); FIELD(ct_stats, memory_bytes);
+    FIELD(ct_stats, mean_shift_runs);
     printf("}}\n");
     return 0;
 }

@@ -1,0 +1,265 @@
+/* Tracking with pixels: mean shift carries a confirmed track through
+ * missing detections on synthetic frames, in I420, NV12 and GRAY8, and
+ * lets go when the person is gone, occluded or leaving the image. */
+#include <math.h>
+#include <stdbool.h>
+
+#include "common.h"
+
+#define W 320
+#define H 240
+#define SEC 1000000LL
+
+typedef struct {
+    uint8_t y[W * H], u[(W / 2) * (H / 2)], v[(W / 2) * (H / 2)], uv[W * (H / 2)];
+} image;
+
+/* A textured grey background; a person (an ellipse, red shirt and blue
+ * trousers) centred at (cx, cy) unless cx < 0. */
+static void draw(image *im, double cx, double cy)
+{
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            im->y[y * W + x] = (uint8_t)(100 + 40 * (((x / 8) + (y / 6)) % 2) + (x * 7 + y * 13) % 11);
+            if (x % 2 == 0 && y % 2 == 0) {
+                im->u[(y / 2) * (W / 2) + x / 2] = 128;
+                im->v[(y / 2) * (W / 2) + x / 2] = 128;
+            }
+        }
+    if (cx >= 0)
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double a = (x - cx) / 15, b = (y - cy) / 35;
+                if (a * a + b * b > 1)
+                    continue;
+                bool top = y < cy;
+                im->y[y * W + x] = (uint8_t)((top ? 80 : 50) + (x * 5 + y * 3) % 9);
+                im->u[(y / 2) * (W / 2) + x / 2] = top ? 90 : 200;
+                im->v[(y / 2) * (W / 2) + x / 2] = top ? 220 : 110;
+            }
+    for (int y = 0; y < H / 2; y++)
+        for (int x = 0; x < W / 2; x++) {
+            im->uv[y * W + 2 * x] = im->u[y * (W / 2) + x];
+            im->uv[y * W + 2 * x + 1] = im->v[y * (W / 2) + x];
+        }
+}
+
+static ct_frame frame_of(const image *im, uint32_t format, int64_t us)
+{
+    ct_frame f = test_frame(us, W, H);
+    f.format = format;
+    f.planes[0] = im->y;
+    f.strides[0] = W;
+    if (format == CT_FORMAT_I420) {
+        f.planes[1] = im->u;
+        f.planes[2] = im->v;
+        f.strides[1] = f.strides[2] = W / 2;
+    } else if (format == CT_FORMAT_NV12) {
+        f.planes[1] = im->uv;
+        f.strides[1] = W;
+    }
+    return f;
+}
+
+static size_t step_pixels(ct_tracker *t, const image *im, uint32_t format, int64_t us,
+                          const ct_detection *d, size_t n, ct_track *out)
+{
+    ct_frame f = frame_of(im, format, us);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 64, sizeof *out, &count), CT_OK);
+    return count;
+}
+
+static const uint32_t formats[] = {CT_FORMAT_I420, CT_FORMAT_NV12, CT_FORMAT_GRAY8};
+
+/* A person walks right at 40 px/s, 10 frames a second; the detector sees
+ * them for a second, then misses them for 0.5 s. */
+static void walk(ct_tracker *t, uint32_t format, bool person_stays, ct_track *last,
+                 size_t *last_n, double *err)
+{
+    static image im;
+    ct_track out[64];
+    *err = 0;
+    for (int k = 0; k < 15; k++) {
+        int64_t us = k * SEC / 10;
+        double cx = 60 + 4.0 * k, cy = 120;
+        bool present = k < 10 || person_stays;
+        draw(&im, present ? cx : -1, cy);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        size_t n = step_pixels(t, &im, format, us, &d, k < 10 ? 1 : 0, out);
+        if (k >= 10 && n > 0 && out[0].state == CT_TRACK_CONFIRMED)
+            *err = fmax(*err, fabs(out[0].barycenter_x - cx) + fabs(out[0].barycenter_y - cy));
+        *last_n = n;
+        if (n)
+            *last = out[0];
+    }
+}
+
+START_TEST(follows_through_missing_detections)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track last;
+    size_t n;
+    double err;
+    walk(t, formats[_i], true, &last, &n, &err);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_int_eq(last.state, CT_TRACK_CONFIRMED);
+    ck_assert_int_eq(last.detection_index, -1);
+    ck_assert(last.time_since_update > 0.4);
+    ck_assert_msg(err <= 4, "followed %.1f px off the person", err);
+    ck_assert(last.confidence >= 0.7f && last.confidence <= 1.0f);
+    ct_stats st;
+    st.size = sizeof st;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
+    ck_assert_uint_gt(st.mean_shift_runs, 0);
+    ck_assert_uint_gt(st.stage_ns[CT_STAGE_MEAN_SHIFT], 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Mean shift switched off, the same walk: the track is lost, not followed. */
+START_TEST(without_mean_shift_the_track_is_lost)
+{
+    ct_config cfg = test_config();
+    cfg.mean_shift = 0;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track last;
+    size_t n;
+    double err;
+    walk(t, CT_FORMAT_I420, true, &last, &n, &err);
+    ck_assert_uint_eq(n, 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* The person is gone with the detections: the background does not hold the
+ * track, which is lost at once. */
+START_TEST(lets_go_when_the_person_is_gone)
+{
+    ct_config cfg = test_config();
+    cfg.report_lost_time = 0;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track last;
+    size_t n;
+    double err;
+    walk(t, formats[_i], false, &last, &n, &err);
+    ck_assert_uint_eq(n, 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+START_TEST(follows_for_mean_shift_max_time_at_most)
+{
+    ct_config cfg = test_config();
+    cfg.mean_shift_max_time = 0.25;
+    cfg.report_lost_time = 0;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track last;
+    size_t n;
+    double err;
+    walk(t, CT_FORMAT_I420, true, &last, &n, &err);
+    ck_assert_uint_eq(n, 0); /* 0.5 s without detections > 0.25 s */
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* A person walking out of the image is not followed on what is left. */
+START_TEST(lets_go_at_the_border)
+{
+    ct_config cfg = test_config();
+    cfg.report_lost_time = 0;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    size_t n = 0;
+    for (int k = 0; k < 14; k++) {
+        double cx = 250 + 6.0 * k, cy = 120;
+        draw(&im, cx, cy);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, &d, k < 10 ? 1 : 0, out);
+    }
+    ck_assert_uint_eq(n, 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Two people; the second walks in front of the first, whose detection is
+ * then missing. Behind the occluder the window would see the occluder: the
+ * first track is not followed while the other covers it. */
+START_TEST(does_not_follow_behind_an_occluder)
+{
+    ct_tracker *t = test_tracker(NULL);
+    static image im;
+    ct_track out[64];
+    for (int k = 0; k < 16; k++) {
+        double ax = 100, bx = 40 + 6.0 * k; /* b reaches a at k = 10 */
+        draw(&im, ax, 120);
+        /* b drawn over a: a second, blue-and-green person */
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double u = (x - bx) / 15, v = (y - 125) / 35;
+                if (u * u + v * v <= 1) {
+                    im.y[y * W + x] = 160;
+                    im.u[(y / 2) * (W / 2) + x / 2] = 60;
+                    im.v[(y / 2) * (W / 2) + x / 2] = 60;
+                }
+            }
+        for (int y = 0; y < H / 2; y++)
+            for (int x = 0; x < W / 2; x++) {
+                im.uv[y * W + 2 * x] = im.u[y * (W / 2) + x];
+                im.uv[y * W + 2 * x + 1] = im.v[y * (W / 2) + x];
+            }
+        bool hidden = fabs(bx - ax) < 20;
+        ct_detection d[2] = {test_det((float)(ax - 15), 85, 30, 70, 0.9f),
+                             test_det((float)(bx - 15), 90, 30, 70, 0.9f)};
+        size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, hidden ? d + 1 : d,
+                               hidden ? 1 : 2, out);
+        for (size_t i = 0; hidden && i < n; i++)
+            if (out[i].id == 1)
+                ck_assert_msg(out[i].state != CT_TRACK_CONFIRMED,
+                              "frame %d: the hidden person's track is followed", k);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Pixels that come and go (some frames without) change nothing bad. */
+START_TEST(frames_with_and_without_pixels)
+{
+    ct_tracker *t = test_tracker(NULL);
+    static image im;
+    ct_track out[64];
+    for (int k = 0; k < 20; k++) {
+        double cx = 60 + 4.0 * k;
+        draw(&im, cx, 120);
+        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.9f);
+        if (k % 3 == 0)
+            ck_assert_uint_eq(test_step(t, k * SEC / 10, &d, 1, out), 1);
+        else
+            ck_assert_uint_eq(step_pixels(t, &im, formats[k % 3], k * SEC / 10, &d, 1, out), 1);
+        ck_assert_uint_eq(out[0].id, 1);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+static Suite *pixels_suite(void)
+{
+    Suite *s = suite_create("pixels");
+    TCase *tc = tcase_create("pixels");
+    tcase_add_loop_test(tc, follows_through_missing_detections, 0, 3);
+    tcase_add_test(tc, without_mean_shift_the_track_is_lost);
+    tcase_add_loop_test(tc, lets_go_when_the_person_is_gone, 0, 3);
+    tcase_add_test(tc, follows_for_mean_shift_max_time_at_most);
+    tcase_add_test(tc, lets_go_at_the_border);
+    tcase_add_test(tc, does_not_follow_behind_an_occluder);
+    tcase_add_test(tc, frames_with_and_without_pixels);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(pixels_suite());
+}
