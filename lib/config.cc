@@ -32,6 +32,7 @@ ct_config default_config()
     c.mean_shift_min_similarity = 0.7f;
     c.mean_shift_max_time = 1.0;
     c.model_learning_rate = 0.2f;
+    c.mean_shift_coarse_below = 0.0f;
     return c;
 }
 
@@ -129,6 +130,10 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.model_learning_rate: %g is not in [0, 1]",
                     (double)c.model_learning_rate);
+    if (!in_range(c.mean_shift_coarse_below, 0, 1) || c.mean_shift_coarse_below == 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.mean_shift_coarse_below: %g is not in [0, 1)",
+                    (double)c.mean_shift_coarse_below);
     if (out)
         *out = c;
     return CT_OK;

@@ -310,6 +310,31 @@ MeanShiftResult MeanShift::track(const Planes &img, double cx, double cy, double
     res.height = h;
     if (!m.valid || m.color != img.color)
         return res;
+    // Coarse to fine: where the prediction missed by more than the window
+    // reaches (fast motion), a first search with a window p.coarse_scale
+    // times larger, and so sampled more sparsely, finds the person; the
+    // window at its own size then refines it.
+    if (p.coarse_scale > 1 && similarity(img, cx, cy, w, h, m) < p.coarse_below) {
+        MeanShiftParams coarse = p;
+        coarse.coarse_scale = 1;
+        MeanShiftResult r = converge(img, cx, cy, w * p.coarse_scale, h * p.coarse_scale, m,
+                                     coarse);
+        cx = r.cx;
+        cy = r.cy;
+    }
+    MeanShiftResult r = converge(img, cx, cy, w, h, m, p);
+    r.iterations += res.iterations;
+    return r;
+}
+
+MeanShiftResult MeanShift::converge(const Planes &img, double cx, double cy, double w, double h,
+                                    const ColorModel &m, const MeanShiftParams &p)
+{
+    MeanShiftResult res;
+    res.cx = cx;
+    res.cy = cy;
+    res.width = w;
+    res.height = h;
     const double hw = w / 2, hh = h / 2;
     uint64_t total = sample(img, cx, cy, hw, hh);
     int rho0 = rho(total, m.qw);

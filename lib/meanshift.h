@@ -39,6 +39,11 @@ struct MeanShiftParams {
     // A scale other than 1 must beat scale 1 by this much (Q16) of the scale
     // criterion: the size regulariser.
     int scale_margin = 200;
+    // Coarse to fine: when the similarity at the start is below
+    // coarse_below (Q16; 0: never), search first with a window coarse_scale
+    // times larger.
+    double coarse_scale = 1.5;
+    int coarse_below = 0;
 };
 
 struct MeanShiftResult {
@@ -85,9 +90,13 @@ public:
     bool step(const Planes &img, double cx, double cy, double hw, double hh,
               const ColorModel &m, double *nx, double *ny, uint32_t *weights = nullptr);
     // Moves the window from (cx, cy) to the local maximum of similarity
-    // (steps 7 and 8 of the paper's algorithm); the size stays.
+    // (steps 7 and 8 of the paper's algorithm), coarse to fine when the start
+    // is far off; the size stays.
     MeanShiftResult track(const Planes &img, double cx, double cy, double w, double h,
                           const ColorModel &m, const MeanShiftParams &p);
+    // (track without the coarse search)
+    MeanShiftResult converge(const Planes &img, double cx, double cy, double w, double h,
+                             const ColorModel &m, const MeanShiftParams &p);
     // Multiscale: replaces r's size by the best of {1 - d, 1, 1 + d} times it
     // at r's centre (and r->rho by that window's), judged by contrast():
     // similarity alone cannot see a person grow, since every window inside

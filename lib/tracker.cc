@@ -60,7 +60,10 @@ Box Track::box() const
 }
 
 
-Engine::Engine(const ct_config &cfg) : cfg_(cfg) {}
+Engine::Engine(const ct_config &cfg) : cfg_(cfg)
+{
+    ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
+}
 
 void Engine::reset()
 {

@@ -65,6 +65,27 @@ START_TEST(newer_caller_struct)
 }
 END_TEST
 
+/* A caller built against 0.1.0's header: its ct_config ends at max_tracks.
+ * The fields added since take their defaults. */
+START_TEST(older_caller_struct)
+{
+    ct_config full = test_config();
+    unsigned char buf[sizeof(ct_config)];
+    memset(buf, 0xEE, sizeof buf); /* garbage past the old size */
+    ct_config *old = (ct_config *)buf;
+    memcpy(buf, &full, offsetof(ct_config, mean_shift));
+    old->size = offsetof(ct_config, mean_shift);
+    old->min_hits = 5;
+    char msg[256];
+    ck_assert_int_eq(ct_config_check(old, msg, sizeof msg), CT_OK);
+    ct_tracker *t = NULL;
+    ck_assert_int_eq(ct_tracker_create(old, &t), CT_OK);
+    ct_tracker_destroy(t);
+    old->size = offsetof(ct_config, mean_shift) - 1;
+    ck_assert_int_eq(ct_config_check(old, msg, sizeof msg), CT_ERROR_INVALID_ARGUMENT);
+}
+END_TEST
+
 START_TEST(too_small_size_is_refused)
 {
     ct_config cfg = test_config();
@@ -118,6 +139,12 @@ static void nan_motion(ct_config *c) { c->motion_noise = NAN; }
 static void negative_detection_noise(ct_config *c) { c->detection_noise = -1; }
 static void bad_clip(ct_config *c) { c->clip_boxes = 2; }
 static void zero_max_tracks(ct_config *c) { c->max_tracks = 0; }
+static void bad_mean_shift(ct_config *c) { c->mean_shift = -1; }
+static void zero_similarity(ct_config *c) { c->mean_shift_min_similarity = 0; }
+static void nan_similarity(ct_config *c) { c->mean_shift_min_similarity = NAN; }
+static void negative_ms_time(ct_config *c) { c->mean_shift_max_time = -0.5; }
+static void big_learning_rate(ct_config *c) { c->model_learning_rate = 1.5f; }
+static void coarse_one(ct_config *c) { c->mean_shift_coarse_below = 1; }
 
 static const bad_case bad_cases[] = {
     {"config.source", bad_source, CT_ERROR_INVALID_ARGUMENT},
@@ -140,6 +167,12 @@ static const bad_case bad_cases[] = {
     {"config.detection_noise", negative_detection_noise, CT_ERROR_INVALID_ARGUMENT},
     {"config.clip_boxes", bad_clip, CT_ERROR_INVALID_ARGUMENT},
     {"config.max_tracks", zero_max_tracks, CT_ERROR_INVALID_ARGUMENT},
+    {"config.mean_shift", bad_mean_shift, CT_ERROR_INVALID_ARGUMENT},
+    {"config.mean_shift_min_similarity", zero_similarity, CT_ERROR_INVALID_ARGUMENT},
+    {"config.mean_shift_min_similarity", nan_similarity, CT_ERROR_INVALID_ARGUMENT},
+    {"config.mean_shift_max_time", negative_ms_time, CT_ERROR_INVALID_ARGUMENT},
+    {"config.model_learning_rate", big_learning_rate, CT_ERROR_INVALID_ARGUMENT},
+    {"config.mean_shift_coarse_below", coarse_one, CT_ERROR_INVALID_ARGUMENT},
 };
 
 START_TEST(bad_field_is_named)
@@ -165,6 +198,7 @@ static Suite *config_suite(void)
     tcase_add_test(tc, default_rejects_null_and_tiny_sizes);
     tcase_add_test(tc, default_fills_only_the_callers_size);
     tcase_add_test(tc, newer_caller_struct);
+    tcase_add_test(tc, older_caller_struct);
     tcase_add_test(tc, too_small_size_is_refused);
     tcase_add_test(tc, check_handles_null_and_short_buffers);
     tcase_add_loop_test(tc, bad_field_is_named, 0, (int)(sizeof bad_cases / sizeof bad_cases[0]));

@@ -314,6 +314,25 @@ Image scene(double cx, double cy, double s, unsigned seed)
 
 } // namespace
 
+// A person 45 pixels away from the prediction is out of the window's reach
+// (half its width is 20): the coarse search finds them.
+START_TEST(coarse_to_fine_finds_fast_motion)
+{
+    MeanShift ms;
+    Image a = scene(100, 100, 1.0, 7), b = scene(145, 104, 1.0, 7);
+    ColorModel m;
+    ms.build(a.planes(), 100, 100, 40, 80, &m);
+    MeanShiftParams fine;
+    MeanShiftResult r = ms.track(b.planes(), 100, 100, 40, 80, m, fine);
+    ck_assert_msg(std::fabs(r.cx - 145) > 3, "the fine search alone found it (%.2f)", r.cx);
+    MeanShiftParams coarse;
+    coarse.coarse_below = (int)(0.9 * kQ16);
+    r = ms.track(b.planes(), 100, 100, 40, 80, m, coarse);
+    ck_assert_msg(std::fabs(r.cx - 145) <= 1 && std::fabs(r.cy - 104) <= 1,
+                  "coarse to fine: (%.2f, %.2f)", r.cx, r.cy);
+}
+END_TEST
+
 START_TEST(converges_on_synthetic_shifts)
 {
     const double shifts[][2] = {{3, -2}, {7, 5}, {-6, 4}, {0, 9}, {-9, -3}};
@@ -439,6 +458,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, integer_agrees_with_float_on_real_clips);
     tcase_add_test(tc, follows_real_people);
     tcase_add_test(tc, converges_on_synthetic_shifts);
+    tcase_add_test(tc, coarse_to_fine_finds_fast_motion);
     tcase_add_test(tc, finds_the_scale);
     tcase_add_test(tc, step_agrees_with_opencv);
     tcase_add_test(tc, grey_frames);

@@ -43,6 +43,7 @@ static const param_def params[] = {
     {"mean_shift_min_similarity", 'f', offsetof(ct_config, mean_shift_min_similarity), "similarity under which a track is lost"},
     {"mean_shift_max_time", 'd', offsetof(ct_config, mean_shift_max_time), "seconds mean shift carries a track"},
     {"model_learning_rate", 'f', offsetof(ct_config, model_learning_rate), "colour model learning rate (eq. 9)"},
+    {"mean_shift_coarse_below", 'f', offsetof(ct_config, mean_shift_coarse_below), "coarse to fine under this similarity (0: off)"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)

@@ -141,6 +141,10 @@ typedef struct ct_config {
     double mean_shift_max_time;
     /* Learning rate of the colour model (the paper's eq. 9), in [0, 1]. */
     float model_learning_rate;
+    /* Coarse to fine, for fast motion: when the similarity at a track's
+     * prediction is under this, in [0, 1), mean shift first searches with a
+     * window 1.5 times larger. 0 (the default) never does. */
+    float mean_shift_coarse_below;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the

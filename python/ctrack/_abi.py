@@ -53,6 +53,7 @@ class Config(C.Structure):
         ("mean_shift_min_similarity", C.c_float),
         ("mean_shift_max_time", C.c_double),
         ("model_learning_rate", C.c_float),
+        ("mean_shift_coarse_below", C.c_float),
     ]
 
 

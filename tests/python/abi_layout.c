@@ -19,6 +19,7 @@ int main(void)
     FIELD(ct_config, clip_boxes); FIELD(ct_config, max_tracks);
     FIELD(ct_config, mean_shift); FIELD(ct_config, mean_shift_min_similarity);
     FIELD(ct_config, mean_shift_max_time); FIELD(ct_config, model_learning_rate);
+    FIELD(ct_config, mean_shift_coarse_below);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
