@@ -22,7 +22,7 @@ ct_config default_config()
     c.low_match_iou = 0.5f;
     c.tentative_match_iou = 0.3f;
     c.min_hits = 3;
-    c.lost_lifetime = 2.0;
+    c.lost_lifetime = 3.0;
     c.report_lost_time = 0.15;
     c.motion_noise = 0.5f;
     c.detection_noise = 0.05f;
@@ -33,6 +33,10 @@ ct_config default_config()
     c.mean_shift_max_time = 1.0;
     c.model_learning_rate = 0.2f;
     c.mean_shift_coarse_below = 0.0f;
+    c.appearance = 1;
+    c.appearance_weight = 0.1f;
+    c.reid_min_similarity = 0.1f;
+    c.reid_max_speed = 1.5f;
     return c;
 }
 
@@ -134,6 +138,22 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.mean_shift_coarse_below: %g is not in [0, 1)",
                     (double)c.mean_shift_coarse_below);
+    if (c.appearance != 0 && c.appearance != 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.appearance: %d is not 0 or 1", (int)c.appearance);
+    if (!in_range(c.appearance_weight, 0, 100))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.appearance_weight: %g is not in [0, 100]",
+                    (double)c.appearance_weight);
+    if (!in_range(c.reid_min_similarity, 0, 1) || c.reid_min_similarity == 0 ||
+        c.reid_min_similarity == 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.reid_min_similarity: %g is not in (0, 1)",
+                    (double)c.reid_min_similarity);
+    if (!in_range(c.reid_max_speed, 0, 1000))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.reid_max_speed: %g is not in [0, 1000] box heights/s",
+                    (double)c.reid_max_speed);
     if (out)
         *out = c;
     return CT_OK;

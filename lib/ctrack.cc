@@ -207,6 +207,7 @@ const char *ct_stage_name(int stage)
     case CT_STAGE_LIFECYCLE: return "lifecycle";
     case CT_STAGE_REPORT: return "report";
     case CT_STAGE_MEAN_SHIFT: return "mean_shift";
+    case CT_STAGE_APPEARANCE: return "appearance";
     default: return nullptr;
     }
 }
@@ -237,6 +238,8 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     s.live_tracks = e.live_tracks();
     s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes();
     s.mean_shift_runs = e.mean_shift_runs();
+    s.ddis_runs = e.ddis_runs();
+    s.template_builds = e.template_builds();
     std::memset(static_cast<void *>(stats), 0, size);
     std::memcpy(static_cast<void *>(stats), &s, std::min(size, sizeof s));
     return CT_OK;

@@ -25,6 +25,9 @@ constexpr double kFollowSizeNoiseRatio = 4.0;
 constexpr double kOccludedFraction = 0.2;
 // Mean shift follows a track only while this much of its box is in the image.
 constexpr double kMinInside = 0.9;
+// A track's appearance template is remade from its detection at most this
+// often (seconds), when nothing occludes it.
+constexpr double kTemplateRefresh = 0.5;
 
 } // namespace
 
@@ -233,15 +236,25 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
     const int n = (int)track_idx.size(), m = (int)det_idx.size();
     if (n == 0 || m == 0)
         return;
+    // Cost: 1 - IoU, plus appearance_weight (1 - DDIS) with appearance. A
+    // pair is allowed only when its IoU reaches min_iou (the tiny slack lets
+    // an IoU exactly at the gate through), whatever it looks like.
+    const double w = appearance_ ? cfg_.appearance_weight : 0.0;
+    const double limit = 1.0 - min_iou + w + 1e-12;
     cost_.resize((size_t)n * m);
     for (int i = 0; i < n; i++) {
-        Box tb = tracks_[track_idx[i]].cue;
-        for (int j = 0; j < m; j++)
-            cost_[(size_t)i * m + j] = 1.0 - iou(tb, det_box(dets[det_idx[j]]));
+        const Track &t = tracks_[track_idx[i]];
+        for (int j = 0; j < m; j++) {
+            double o = iou(t.cue, det_box(dets[det_idx[j]]));
+            double c = 1.0 - o;
+            if (o + 1e-12 < min_iou)
+                c = limit; // not allowed
+            else if (w > 0)
+                c += w * (1.0 - similarity(t, det_idx[j]));
+            cost_[(size_t)i * m + j] = c;
+        }
     }
-    // A pair is allowed when 1 - IoU < 1 - min_iou; the tiny slack lets an
-    // IoU exactly at the gate through.
-    assigner_.solve(cost_.data(), n, m, 1.0 - min_iou + 1e-12, row_to_col_);
+    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
         int j = row_to_col_[i];
         if (j < 0)
@@ -254,6 +267,100 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
     det_idx.erase(std::remove_if(det_idx.begin(), det_idx.end(),
                                  [this](int d) { return det_used_[d] != 0; }),
                   det_idx.end());
+}
+
+// Each detection's descriptors (what DDIS compares), once a step.
+void Engine::describe_detections(const Planes &img, const ct_detection *dets, size_t n)
+{
+    const size_t per = (size_t)kPoints * kDescDim;
+    det_desc_.resize(n * per);
+    for (size_t j = 0; j < n; j++)
+        if (dets[j].score >= cfg_.low_score)
+            describe(img, dets[j].left, dets[j].top, dets[j].width, dets[j].height,
+                     &det_desc_[j * per]);
+}
+
+// DDIS of detection det against the track's template; a track without one
+// looks like anything (1).
+double Engine::similarity(const Track &t, int det)
+{
+    if (t.tmpl < 0)
+        return 1.0;
+    ddis_runs_++;
+    return ddis_.ddis(templates_[t.tmpl], &det_desc_[(size_t)det * kPoints * kDescDim]);
+}
+
+// Lost tracks take back high-score detections that nobody claimed and that
+// look like them (DDIS), near where they were heading: a person who
+// reappears after an occlusion keeps their id.
+void Engine::reidentify(const ct_detection *dets)
+{
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state == CT_TRACK_LOST && tracks_[i].tmpl >= 0 &&
+            tracks_[i].last_update_us != last_us_)
+            pool_tracks_.push_back((int)i);
+    const int n = (int)pool_tracks_.size(), m = (int)pool_dets_.size();
+    if (n == 0 || m == 0)
+        return;
+    const double limit = 1.0 - cfg_.reid_min_similarity + 1e-12;
+    cost_.resize((size_t)n * m);
+    for (int i = 0; i < n; i++) {
+        const Track &t = tracks_[pool_tracks_[i]];
+        const double lost_s = (double)(last_us_ - t.last_update_us) * 1e-6;
+        const double h = std::max(t.h.x, kMinSide);
+        const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
+        for (int j = 0; j < m; j++) {
+            const ct_detection &d = dets[pool_dets_[j]];
+            double dx = d.left + d.width / 2 - t.cx.x, dy = d.top + d.height / 2 - t.cy.x;
+            double ratio = d.height / h;
+            bool plausible = std::hypot(dx, dy) <= reach && ratio > 0.67 && ratio < 1.5;
+            cost_[(size_t)i * m + j] = plausible ? 1.0 - similarity(t, pool_dets_[j]) : limit;
+        }
+    }
+    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
+    for (int i = 0; i < n; i++) {
+        int j = row_to_col_[i];
+        if (j < 0)
+            continue;
+        update(tracks_[pool_tracks_[i]], dets[pool_dets_[j]], pool_dets_[j], last_us_);
+        det_used_[pool_dets_[j]] = 1;
+    }
+    pool_dets_.erase(std::remove_if(pool_dets_.begin(), pool_dets_.end(),
+                                    [this](int d) { return det_used_[d] != 0; }),
+                     pool_dets_.end());
+}
+
+// Templates: made when a track is confirmed, remade from its detection at
+// most every kTemplateRefresh seconds while nothing occludes it. Slots of
+// removed tracks are reused.
+void Engine::learn_templates(int64_t t_us)
+{
+    slot_used_.assign(templates_.size(), 0);
+    for (const Track &t : tracks_)
+        if (t.tmpl >= 0)
+            slot_used_[t.tmpl] = 1;
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0 || t.last_update_us != t_us)
+            continue;
+        if (t.tmpl >= 0 && ((double)(t_us - t.tmpl_us) * 1e-6 < kTemplateRefresh || occluded(i)))
+            continue;
+        if (t.tmpl < 0) {
+            size_t slot = 0;
+            while (slot < slot_used_.size() && slot_used_[slot])
+                slot++;
+            if (slot == templates_.size()) {
+                templates_.emplace_back();
+                slot_used_.push_back(0);
+            }
+            slot_used_[slot] = 1;
+            t.tmpl = (int)slot;
+        }
+        templates_[t.tmpl].build(&det_desc_[(size_t)t.det_index * kPoints * kDescDim]);
+        t.tmpl_us = t_us;
+        template_builds_++;
+    }
 }
 
 void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
@@ -280,6 +387,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
                             const ct_detection *dets, size_t n)
 {
     const bool pixels = cfg_.mean_shift && !img.empty();
+    appearance_ = cfg_.appearance && !img.empty();
     const bool first = !has_time_;
     const double dt = first ? 0.0 : (double)(t_us - last_us_) * 1e-6;
     last_us_ = t_us;
@@ -291,6 +399,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     if (pixels) {
         refine(img);
         stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+    if (appearance_) {
+        describe_detections(img, dets, n);
+        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
     }
 
     det_used_.assign(n, 0);
@@ -327,6 +439,11 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         if (tracks_[i].state == CT_TRACK_TENTATIVE)
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
+
+    // 4. Lost tracks against the high-score detections still left, by
+    //    appearance.
+    if (appearance_)
+        reidentify(dets);
     stage_ns_[CT_STAGE_ASSOCIATE] += sw.lap();
     if (pixels) {
         follow_or_lose(img, t_us);
@@ -368,9 +485,21 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         learn_models(img);
         stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
     }
+    if (appearance_) {
+        learn_templates(t_us);
+        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
+    }
 
     report(t_us, image);
     stage_ns_[CT_STAGE_REPORT] += sw.lap();
+}
+
+size_t Engine::templates_memory() const
+{
+    size_t b = templates_.capacity() * sizeof(Template);
+    for (const Template &tp : templates_)
+        b += tp.desc.capacity() * sizeof(float) + tp.index.memory_bytes();
+    return b;
 }
 
 size_t Engine::memory_bytes() const
@@ -381,7 +510,8 @@ size_t Engine::memory_bytes() const
            cost_.capacity() * sizeof(double) +
            (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
             low_dets_.capacity()) * sizeof(int) +
-           det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes();
+           det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +
+           det_desc_.capacity() * sizeof(float) + slot_used_.capacity() + templates_memory();
 }
 
 void Engine::report(int64_t t_us, ImageSize image)

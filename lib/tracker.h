@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ctrack/ctrack.h"
+#include "appearance.h"
 #include "assign.h"
 #include "meanshift.h"
 #include "motion.h"
@@ -35,6 +36,10 @@ struct Track {
     bool followed = false;
     MeanShiftResult ms;
     ColorModel model;
+    // Appearance template: a slot of Engine::templates_ (-1: none), and when
+    // it was made.
+    int tmpl = -1;
+    int64_t tmpl_us = 0;
 
     Box box() const;
 };
@@ -59,7 +64,10 @@ public:
     const std::vector<ct_track> &reported() const { return reported_; }
     size_t live_tracks() const { return tracks_.size(); }
     uint64_t mean_shift_runs() const { return ms_runs_; }
+    uint64_t ddis_runs() const { return ddis_runs_; }
+    uint64_t template_builds() const { return template_builds_; }
     size_t memory_bytes() const;
+    size_t templates_memory() const;
     // Nanoseconds spent in each ct_stage, summed over the steps.
     const uint64_t *stage_ns() const { return stage_ns_; }
     bool has_time() const { return has_time_; }
@@ -72,6 +80,10 @@ private:
     void refine(const Planes &img);
     void follow_or_lose(const Planes &img, int64_t t_us);
     void learn_models(const Planes &img);
+    void describe_detections(const Planes &img, const ct_detection *dets, size_t n);
+    double similarity(const Track &t, int det);
+    void reidentify(const ct_detection *dets);
+    void learn_templates(int64_t t_us);
     bool occluded(size_t i) const;
     void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
                const ct_detection *dets, double min_iou);
@@ -80,7 +92,7 @@ private:
     void report(int64_t t_us, ImageSize image);
 
     uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
-    uint64_t ms_runs_ = 0;
+    uint64_t ms_runs_ = 0, ddis_runs_ = 0, template_builds_ = 0;
     ct_config cfg_;
     std::vector<Track> tracks_;
     std::vector<ct_track> reported_;
@@ -98,6 +110,14 @@ private:
     Assigner assigner_;
     MeanShift ms_;
     MeanShiftParams ms_params_;
+
+    // Appearance: templates in slots that tracks point to (a slot no track
+    // points to is free), and this step's descriptors of the detections.
+    bool appearance_ = false; // this step
+    std::vector<Template> templates_;
+    std::vector<char> slot_used_;
+    std::vector<float> det_desc_;
+    Ddis ddis_;
     std::vector<double> cost_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;

@@ -145,6 +145,12 @@ static void nan_similarity(ct_config *c) { c->mean_shift_min_similarity = NAN; }
 static void negative_ms_time(ct_config *c) { c->mean_shift_max_time = -0.5; }
 static void big_learning_rate(ct_config *c) { c->model_learning_rate = 1.5f; }
 static void coarse_one(ct_config *c) { c->mean_shift_coarse_below = 1; }
+static void bad_appearance(ct_config *c) { c->appearance = 3; }
+static void negative_weight(ct_config *c) { c->appearance_weight = -0.1f; }
+static void nan_weight(ct_config *c) { c->appearance_weight = NAN; }
+static void zero_reid(ct_config *c) { c->reid_min_similarity = 0; }
+static void one_reid(ct_config *c) { c->reid_min_similarity = 1; }
+static void inf_reid_speed(ct_config *c) { c->reid_max_speed = INFINITY; }
 
 static const bad_case bad_cases[] = {
     {"config.source", bad_source, CT_ERROR_INVALID_ARGUMENT},
@@ -173,6 +179,12 @@ static const bad_case bad_cases[] = {
     {"config.mean_shift_max_time", negative_ms_time, CT_ERROR_INVALID_ARGUMENT},
     {"config.model_learning_rate", big_learning_rate, CT_ERROR_INVALID_ARGUMENT},
     {"config.mean_shift_coarse_below", coarse_one, CT_ERROR_INVALID_ARGUMENT},
+    {"config.appearance", bad_appearance, CT_ERROR_INVALID_ARGUMENT},
+    {"config.appearance_weight", negative_weight, CT_ERROR_INVALID_ARGUMENT},
+    {"config.appearance_weight", nan_weight, CT_ERROR_INVALID_ARGUMENT},
+    {"config.reid_min_similarity", zero_reid, CT_ERROR_INVALID_ARGUMENT},
+    {"config.reid_min_similarity", one_reid, CT_ERROR_INVALID_ARGUMENT},
+    {"config.reid_max_speed", inf_reid_speed, CT_ERROR_INVALID_ARGUMENT},
 };
 
 START_TEST(bad_field_is_named)

@@ -2,6 +2,7 @@
  * missing detections on synthetic frames, in I420, NV12 and GRAY8, and
  * lets go when the person is gone, occluded or leaving the image. */
 #include <math.h>
+#include <pthread.h>
 #include <stdbool.h>
 
 #include "common.h"
@@ -224,6 +225,93 @@ START_TEST(does_not_follow_behind_an_occluder)
 }
 END_TEST
 
+/* A person walks, is hidden (no detection, not in the frames) for 1.5 s
+ * while the motion model carries the track on, and reappears where they
+ * stopped, far from that prediction: only their appearance (DDIS) brings
+ * back their id. */
+static uint64_t reappear(int appearance)
+{
+    ct_config cfg = test_config();
+    cfg.appearance = appearance;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    uint64_t first = 0, last = 0;
+    for (int k = 0; k < 40; k++) {
+        bool hidden = k >= 12 && k < 27;
+        double cx = k < 12 ? 60 + 6.0 * k : 126 + 1.0 * (k - 12), cy = 120;
+        draw(&im, hidden ? -1 : cx, cy);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, &d, hidden ? 0 : 1, out);
+        if (n && !first)
+            first = out[0].id;
+        if (n)
+            last = out[0].id;
+    }
+    ct_tracker_destroy(t);
+    ck_assert_uint_ne(first, 0);
+    return first == last ? 1 : 0;
+}
+
+START_TEST(reidentifies_by_appearance)
+{
+    ck_assert_int_eq(reappear(1), 1);
+    ck_assert_int_eq(reappear(0), 0); /* without appearance: a new id */
+}
+END_TEST
+
+/* Two trackers in two threads, with pixels (mean shift, DDIS, FLANN), give
+ * what they give one after the other. */
+typedef struct {
+    uint32_t format;
+    ct_track out[64 * 20];
+    size_t n;
+} pixel_run;
+
+static void *run_pixels(void *arg)
+{
+    pixel_run *r = arg;
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    ct_tracker *t = NULL;
+    ct_tracker_create(&cfg, &t);
+    static __thread image im;
+    r->n = 0;
+    for (int k = 0; k < 20; k++) {
+        double cx = 60 + 5.0 * k;
+        draw(&im, cx, 120);
+        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.9f);
+        ct_frame f = frame_of(&im, r->format, k * SEC / 10);
+        size_t count = 0;
+        if (ct_tracker_feed(t, &f, k % 4 == 3 ? NULL : &d, k % 4 == 3 ? 0 : 1) != CT_OK ||
+            ct_tracker_get_tracks(t, r->out + r->n, 64, sizeof r->out[0], &count) != CT_OK)
+            break;
+        r->n += count;
+    }
+    ct_tracker_destroy(t);
+    return NULL;
+}
+
+START_TEST(threads_with_pixels)
+{
+    static pixel_run a, b, pa, pb;
+    a.format = pa.format = CT_FORMAT_I420;
+    b.format = pb.format = CT_FORMAT_NV12;
+    run_pixels(&a);
+    run_pixels(&b);
+    pthread_t ta, tb;
+    ck_assert_int_eq(pthread_create(&ta, NULL, run_pixels, &pa), 0);
+    ck_assert_int_eq(pthread_create(&tb, NULL, run_pixels, &pb), 0);
+    pthread_join(ta, NULL);
+    pthread_join(tb, NULL);
+    ck_assert_uint_gt(a.n, 10);
+    ck_assert_uint_eq(a.n, pa.n);
+    ck_assert_uint_eq(b.n, pb.n);
+    ck_assert_mem_eq(a.out, pa.out, a.n * sizeof a.out[0]);
+    ck_assert_mem_eq(b.out, pb.out, b.n * sizeof b.out[0]);
+}
+END_TEST
+
 /* Pixels that come and go (some frames without) change nothing bad. */
 START_TEST(frames_with_and_without_pixels)
 {
@@ -255,6 +343,8 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, lets_go_at_the_border);
     tcase_add_test(tc, does_not_follow_behind_an_occluder);
     tcase_add_test(tc, frames_with_and_without_pixels);
+    tcase_add_test(tc, reidentifies_by_appearance);
+    tcase_add_test(tc, threads_with_pixels);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -44,6 +44,10 @@ static const param_def params[] = {
     {"mean_shift_max_time", 'd', offsetof(ct_config, mean_shift_max_time), "seconds mean shift carries a track"},
     {"model_learning_rate", 'f', offsetof(ct_config, model_learning_rate), "colour model learning rate (eq. 9)"},
     {"mean_shift_coarse_below", 'f', offsetof(ct_config, mean_shift_coarse_below), "coarse to fine under this similarity (0: off)"},
+    {"appearance", 'i', offsetof(ct_config, appearance), "1: DDIS appearance templates"},
+    {"appearance_weight", 'f', offsetof(ct_config, appearance_weight), "weight of 1 - DDIS in the cost"},
+    {"reid_min_similarity", 'f', offsetof(ct_config, reid_min_similarity), "DDIS to re-identify a lost track"},
+    {"reid_max_speed", 'f', offsetof(ct_config, reid_max_speed), "re-identification reach, box heights/s"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)

@@ -111,6 +111,7 @@ TRACKERS = [
     ("ctrack-det", "ctrack", "detections"),
     ("ctrack-detpix", "ctrack", "detections + pixels"),
     ("ctrack-detpix-noms", "ctrack, mean shift off (ablation)", "detections + pixels"),
+    ("ctrack-detpix-noapp", "ctrack, DDIS off (ablation)", "detections + pixels"),
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections"),
     ("norfair", "norfair 2.3.0 (IoU)", "detections"),
     ("mog2-iou", "OpenCV MOG2 + blobs + IoU tracker", "pixels"),
@@ -142,6 +143,9 @@ def main():
             elif key == "ctrack-detpix-noms":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
                                      params=["mean_shift=0"])
+            elif key == "ctrack-detpix-noapp":
+                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
+                                     params=["appearance=0"])
             elif key == "bytetrack":
                 rows, seconds = peers.bytetrack(dets, n, fps)
                 write_rows(path, rows)
@@ -233,10 +237,12 @@ NOTES = """## Notes
   the Y4M): each confirmed track keeps a colour model, multiscale mean shift refines
   its predicted box before association and follows it through missing detections
   (docs/meanshift.md). Tracking from the pixels alone is not available yet.
-- **Ablation.** "mean shift off" is the same run with `mean_shift=0` and every
+- **Ablations.** "mean shift off" is the same run with `mean_shift=0` and every
   other parameter equal, the lost-track lifetime and the reporting of lost tracks
   included: what mean shift adds comes from following the pixels, not from
-  coasting longer.
+  coasting longer. "DDIS off" is the same run with `appearance=0`: no appearance
+  term in the association cost and no re-identification of lost tracks, the
+  lost-track lifetime unchanged (docs/appearance.md).
 - **Peers.** ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
   to the sequence's); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
   baseline is OpenCV's MOG2 (defaults, shadows dropped), a 3x3 opening and a 7x7

@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 2
+#define CT_VERSION_MINOR 3
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -145,6 +145,22 @@ typedef struct ct_config {
      * prediction is under this, in [0, 1), mean shift first searches with a
      * window 1.5 times larger. 0 (the default) never does. */
     float mean_shift_coarse_below;
+
+    /* Added in 0.3.0. */
+
+    /* Non-zero: with pixels, each confirmed track keeps an appearance
+     * template, compared with candidates by Deformable Diversity Similarity
+     * (DDIS) in association and to re-identify lost tracks. */
+    int32_t appearance;
+    /* Weight of (1 - DDIS) beside (1 - IoU) in the association cost, >= 0. */
+    float appearance_weight;
+    /* DDIS, in (0, 1), at or above which a lost track takes back a new
+     * detection near where it was heading (re-identification). */
+    float reid_min_similarity;
+    /* How far a lost track may be re-identified from its predicted centre,
+     * in its box heights per second it has been lost (at least one box
+     * height). */
+    float reid_max_speed;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
@@ -265,7 +281,8 @@ typedef enum ct_stage {
     CT_STAGE_ASSOCIATE = 2, /* costs and assignment */
     CT_STAGE_LIFECYCLE = 3, /* updates, losses, removals, births */
     CT_STAGE_REPORT = 4,    /* building the reported tracks */
-    CT_STAGE_MEAN_SHIFT = 5 /* colour models and mean shift (0.2.0) */
+    CT_STAGE_MEAN_SHIFT = 5, /* colour models and mean shift (0.2.0) */
+    CT_STAGE_APPEARANCE = 6  /* descriptors, DDIS, templates (0.3.0) */
 } ct_stage;
 
 #define CT_STATS_MAX_STAGES 16
@@ -288,6 +305,9 @@ typedef struct ct_stats {
      * step with pixels), so stage_ns[CT_STAGE_MEAN_SHIFT] / mean_shift_runs
      * is its cost per person. */
     uint64_t mean_shift_runs;
+    /* Added in 0.3.0: DDIS evaluations and template (FLANN index) builds. */
+    uint64_t ddis_runs;
+    uint64_t template_builds;
 } ct_stats;
 
 /* Fills *stats (stats->size must be set). Resetting the tracker does not

@@ -251,7 +251,8 @@ class Tracker:
                 stages[name.decode()] = s.stage_ns[i] * 1e-9
         return {"steps": s.steps, "feed_seconds": s.feed_ns * 1e-9, "stages": stages,
                 "live_tracks": s.live_tracks, "memory_bytes": s.memory_bytes,
-                "mean_shift_runs": s.mean_shift_runs}
+                "mean_shift_runs": s.mean_shift_runs, "ddis_runs": s.ddis_runs,
+                "template_builds": s.template_builds}
 
     # -- conversions -------------------------------------------------------
     def _fill_frame(self, f, frame, format):

@@ -54,6 +54,10 @@ class Config(C.Structure):
         ("mean_shift_max_time", C.c_double),
         ("model_learning_rate", C.c_float),
         ("mean_shift_coarse_below", C.c_float),
+        ("appearance", C.c_int32),
+        ("appearance_weight", C.c_float),
+        ("reid_min_similarity", C.c_float),
+        ("reid_max_speed", C.c_float),
     ]
 
 
@@ -113,6 +117,8 @@ class Stats(C.Structure):
         ("live_tracks", C.c_uint64),
         ("memory_bytes", C.c_uint64),
         ("mean_shift_runs", C.c_uint64),
+        ("ddis_runs", C.c_uint64),
+        ("template_builds", C.c_uint64),
     ]
 
 

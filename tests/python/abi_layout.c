@@ -19,7 +19,9 @@ int main(void)
     FIELD(ct_config, clip_boxes); FIELD(ct_config, max_tracks);
     FIELD(ct_config, mean_shift); FIELD(ct_config, mean_shift_min_similarity);
     FIELD(ct_config, mean_shift_max_time); FIELD(ct_config, model_learning_rate);
-    FIELD(ct_config, mean_shift_coarse_below);
+    FIELD(ct_config, mean_shift_coarse_below); FIELD(ct_config, appearance);
+    FIELD(ct_config, appearance_weight); FIELD(ct_config, reid_min_similarity);
+    FIELD(ct_config, reid_max_speed);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
@@ -41,7 +43,8 @@ int main(void)
     printf("}, \"Stats\": {\"sizeof\": %zu, ", sizeof(ct_stats));
     FIELD(ct_stats, size); FIELD(ct_stats, steps); FIELD(ct_stats, feed_ns);
     FIELD(ct_stats, stage_ns); FIELD(ct_stats, live_tracks); FIELD(ct_stats, memory_bytes);
-    FIELD(ct_stats, mean_shift_runs);
+    FIELD(ct_stats, mean_shift_runs); FIELD(ct_stats, ddis_runs);
+    FIELD(ct_stats, template_builds);
     printf("}}\n");
     return 0;
 }

@@ -1,0 +1,161 @@
+// ddis-bench: the cost of one DDIS (a track's template against a
+// candidate) and of one template build (FLANN index), at PETS09-S2L1 box
+// sizes with the default template (6 x 12 points of 11 numbers), on the real
+// crossing clips of tests/data/pets09-crops; and the heap allocations each
+// makes (FLANN's KDTreeSingleIndex allocates in findNeighbors and in
+// buildIndex).
+//   ddis-bench [--json FILE] DATA_DIR (tests/data)
+#include <malloc.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "appearance.h"
+#include "input.h"
+
+extern "C" {
+void *__libc_malloc(size_t);
+void *__libc_calloc(size_t, size_t);
+void *__libc_realloc(void *, size_t);
+void __libc_free(void *);
+}
+
+static unsigned long long n_allocs;
+
+extern "C" void *malloc(size_t n)
+{
+    n_allocs++;
+    return __libc_malloc(n);
+}
+extern "C" void *calloc(size_t a, size_t b)
+{
+    n_allocs++;
+    return __libc_calloc(a, b);
+}
+extern "C" void *realloc(void *p, size_t n)
+{
+    n_allocs++;
+    return __libc_realloc(p, n);
+}
+extern "C" void free(void *p)
+{
+    __libc_free(p);
+}
+
+using namespace ctrack;
+using clk = std::chrono::steady_clock;
+
+int main(int argc, char **argv)
+{
+    const char *json = nullptr, *data = nullptr;
+    for (int i = 1; i < argc; i++) {
+        if (!std::strcmp(argv[i], "--json") && i + 1 < argc)
+            json = argv[++i];
+        else
+            data = argv[i];
+    }
+    if (!data) {
+        std::fprintf(stderr, "usage: ddis-bench [--json FILE] DATA_DIR\n");
+        return 2;
+    }
+    std::string dir = std::string(data) + "/pets09-crops/";
+    FILE *f = std::fopen((dir + "crossings.csv").c_str(), "r");
+    if (!f) {
+        std::perror((dir + "crossings.csv").c_str());
+        return 1;
+    }
+    // The descriptors of every person box of every clip.
+    std::vector<std::vector<float>> desc;
+    double heights = 0;
+    char line[1024];
+    while (std::fgets(line, sizeof line, f)) {
+        if (line[0] == '#')
+            continue;
+        char name[128];
+        int frame;
+        double b[16];
+        if (std::sscanf(line, "%127[^,],%d,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf",
+                        name, &frame, b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7, b + 8, b + 9,
+                        b + 10, b + 11, b + 12, b + 13, b + 14, b + 15) != 18)
+            continue;
+        ct_input_params ip = {0, 0, CT_FORMAT_I420};
+        ct_input *in = nullptr;
+        ct_input_info info;
+        char err[256];
+        if (ct_input_open((dir + name + ".y4m").c_str(), &ip, &in, &info, err, sizeof err) < 0) {
+            std::fprintf(stderr, "ddis-bench: %s\n", err);
+            return 1;
+        }
+        for (int k = 0; k < 2; k++) {
+            ct_frame fr;
+            if (ct_input_read(in, &fr, err, sizeof err) != 1)
+                return 1;
+            Planes p;
+            p.width = fr.width;
+            p.height = fr.height;
+            p.y = fr.planes[0];
+            p.u = fr.planes[1];
+            p.v = fr.planes[2];
+            p.y_stride = fr.strides[0];
+            p.u_stride = fr.strides[1];
+            p.v_stride = fr.strides[2];
+            p.color = true;
+            for (int person = 0; person < 2; person++) {
+                const double *x = b + (k * 2 + person) * 4;
+                desc.emplace_back((size_t)kPoints * kDescDim);
+                describe(p, x[0], x[1], x[2], x[3], desc.back().data());
+                heights += x[3];
+            }
+        }
+        ct_input_close(in);
+    }
+    std::fclose(f);
+    const size_t n = desc.size();
+    std::vector<Template> templates(n);
+    Ddis ddis;
+
+    // Builds: every box's template, several rounds.
+    const int rounds = 200;
+    unsigned long long a0 = n_allocs;
+    auto t0 = clk::now();
+    for (int r = 0; r < rounds; r++)
+        for (size_t i = 0; i < n; i++)
+            templates[i].build(desc[i].data());
+    double build_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / (rounds * n);
+    double build_allocs = (double)(n_allocs - a0) / (rounds * n);
+
+    // DDIS: every template against every box.
+    volatile double sink = 0;
+    a0 = n_allocs;
+    t0 = clk::now();
+    const int drounds = 20;
+    for (int r = 0; r < drounds; r++)
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = 0; j < n; j++)
+                sink = sink + ddis.ddis(templates[i], desc[j].data());
+    double calls = (double)drounds * n * n;
+    double ddis_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / calls;
+    double ddis_allocs = (double)(n_allocs - a0) / calls;
+
+    std::printf("DDIS at PETS09-S2L1 box sizes (mean height %.0f px), template of %d x %d points "
+                "of %d numbers:\n", heights / n, kGridX, kGridY, kDescDim);
+    std::printf("  one DDIS (track against candidate): %.2f us, %.1f heap allocations (FLANN's "
+                "findNeighbors, one a query)\n", ddis_us, ddis_allocs);
+    std::printf("  one template build (FLANN index):   %.2f us, %.1f heap allocations\n", build_us,
+                build_allocs);
+    if (json) {
+        FILE *o = std::fopen(json, "w");
+        if (!o)
+            return 1;
+        std::fprintf(o, "{\"ddis_us\": %.4f, \"ddis_allocs\": %.2f, \"build_us\": %.4f, "
+                        "\"build_allocs\": %.2f, \"points\": %d, \"dims\": %d, "
+                        "\"mean_box_height\": %.1f}\n",
+                     ddis_us, ddis_allocs, build_us, build_allocs, kPoints, kDescDim, heights / n);
+        std::fclose(o);
+    }
+    return 0;
+}

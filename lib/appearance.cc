@@ -1,0 +1,110 @@
+#include "appearance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ctrack {
+
+namespace {
+
+// Chroma counts for more than one luma sample: a shirt's colour tells
+// people apart better than its shading.
+constexpr float kChromaWeight = 2.0f;
+
+inline int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+} // namespace
+
+// The mean of plane p (stride, subsampling shift) over the rectangle
+// [x0, x1) x [y0, y1) of luma coordinates, clamped to the image; at least
+// one sample.
+static float mean_of(const uint8_t *p, int stride, int step, int shift, const Planes &img,
+                     double x0, double y0, double x1, double y1)
+{
+    const int w = (img.width + (1 << shift) - 1) >> shift, h = (img.height + (1 << shift) - 1) >> shift;
+    int a = clampi((int)std::floor(x0) >> shift, 0, w - 1);
+    int b = clampi(((int)std::ceil(x1) - 1) >> shift, a, w - 1);
+    int c = clampi((int)std::floor(y0) >> shift, 0, h - 1);
+    int d = clampi(((int)std::ceil(y1) - 1) >> shift, c, h - 1);
+    unsigned sum = 0, n = 0;
+    for (int y = c; y <= d; y++)
+        for (int x = a; x <= b; x++, n++)
+            sum += p[(size_t)y * stride + (size_t)x * step];
+    return (float)sum / (float)n;
+}
+
+void describe(const Planes &img, double left, double top, double width, double height,
+              float *out)
+{
+    const double cw = width / kGridX, ch = height / kGridY;
+    for (int gy = 0; gy < kGridY; gy++)
+        for (int gx = 0; gx < kGridX; gx++) {
+            float *d = out + (size_t)(gy * kGridX + gx) * kDescDim;
+            const double x0 = left + gx * cw, y0 = top + gy * ch;
+            int k = 0;
+            // Luma: the means of the cell's 3 x 3 sub-blocks (means, not
+            // single pixels, so that a shift of a pixel or two changes
+            // little).
+            for (int sy = 0; sy < 3; sy++)
+                for (int sx = 0; sx < 3; sx++)
+                    d[k++] = mean_of(img.y, img.y_stride, 1, 0, img, x0 + sx * cw / 3,
+                                     y0 + sy * ch / 3, x0 + (sx + 1) * cw / 3,
+                                     y0 + (sy + 1) * ch / 3);
+            if (img.color) {
+                d[k++] = kChromaWeight * mean_of(img.u, img.u_stride, img.c_step, 1, img, x0, y0,
+                                                 x0 + cw, y0 + ch);
+                d[k++] = kChromaWeight * mean_of(img.v, img.v_stride, img.c_step, 1, img, x0, y0,
+                                                 x0 + cw, y0 + ch);
+            } else {
+                d[k++] = 0;
+                d[k++] = 0;
+            }
+        }
+}
+
+void Template::build(const float *descriptors)
+{
+    desc.assign(descriptors, descriptors + (size_t)kPoints * kDescDim);
+    index.build(desc.data(), kPoints, kDescDim);
+}
+
+void Ddis::neighbours(const Template &p, const float *q, float eps)
+{
+    p.index.search(q, kPoints, index_, dist2_, eps);
+    std::fill(kappa_, kappa_ + kPoints, 0);
+    for (int j = 0; j < kPoints; j++)
+        kappa_[index_[j]]++;
+}
+
+Ddis::Ddis()
+{
+    for (int k = 0; k <= kPoints; k++)
+        exp_[k] = std::exp(1.0 - k);
+}
+
+double Ddis::ddis(const Template &p, const float *q, float eps)
+{
+    neighbours(p, q, eps);
+    double sum = 0;
+    for (int j = 0; j < kPoints; j++) {
+        const int i = index_[j];
+        const int dx = (i % kGridX) - (j % kGridX), dy = (i / kGridX) - (j / kGridX);
+        const double r = std::sqrt((double)(dx * dx + dy * dy)); // in grid cells
+        sum += exp_[kappa_[i]] / (1 + r);
+    }
+    return sum / kPoints; // m = n = kPoints
+}
+
+double Ddis::dis(const Template &p, const float *q, float eps)
+{
+    neighbours(p, q, eps);
+    int distinct = 0;
+    for (int i = 0; i < kPoints; i++)
+        distinct += kappa_[i] > 0;
+    return (double)distinct / kPoints;
+}
+
+} // namespace ctrack

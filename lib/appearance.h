@@ -1,0 +1,59 @@
+// Appearance templates and Deformable Diversity Similarity (DDIS; Talmi,
+// Mechrez and Zelnik-Manor, CVPR 2017; the paper's eq. 2-6; ALGORITHM.md
+// section 3), the nearest neighbours from a FLANN kd-tree (nnindex.h).
+#ifndef CTRACK_APPEARANCE_H
+#define CTRACK_APPEARANCE_H
+
+#include <cstdint>
+#include <vector>
+
+#include "nnindex.h"
+#include "planes.h"
+
+namespace ctrack {
+
+// A box is described on a grid of kGridX x kGridY cells; each cell's
+// descriptor is the luma at 3 x 3 points inside it and the chroma (U, V)
+// at its centre: kDescDim numbers. Grey frames give chroma 0.
+constexpr int kGridX = 6;
+constexpr int kGridY = 12;
+constexpr int kPoints = kGridX * kGridY;
+constexpr int kDescDim = 11;
+
+// Describes the box (left, top, width, height) of the frame into out
+// (kPoints * kDescDim floats). Points outside the image read its edge.
+void describe(const Planes &img, double left, double top, double width, double height,
+              float *out);
+
+// One template: the descriptors of a box and a kd-tree over them.
+struct Template {
+    std::vector<float> desc;
+    NNIndex index;
+    void build(const float *descriptors);
+};
+
+// The scratch of DDIS computations; keeps its buffers.
+class Ddis {
+public:
+    Ddis();
+    // DDIS(Q, P) in [0, 1]: Q's points' nearest neighbours in P by
+    // appearance, kappa(p) how many of Q chose p, r_j the distance in grid
+    // cells between q_j and its neighbour;
+    // DDIS = 1 / min(m, n) * sum_j exp(1 - kappa(NN(q_j))) / (1 + r_j).
+    // eps > 0 allows approximate neighbours (see NNIndex::search).
+    double ddis(const Template &p, const float *q, float eps = 0);
+    // The same neighbours without the deformation term: DIS, eq. (3), the
+    // number of distinct neighbours over min(m, n).
+    double dis(const Template &p, const float *q, float eps = 0);
+
+private:
+    void neighbours(const Template &p, const float *q, float eps);
+    int index_[kPoints];
+    float dist2_[kPoints];
+    int kappa_[kPoints];
+    double exp_[kPoints + 1]; // exp(1 - k)
+};
+
+} // namespace ctrack
+
+#endif

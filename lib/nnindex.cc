@@ -1,0 +1,78 @@
+// The only file that includes FLANN.
+#include "nnindex.h"
+
+// Only what the single kd-tree needs. Its virtual saveIndex() still pulls in
+// FLANN's serialisation, so the library links lz4 (lib/meson.build).
+#include <flann/algorithms/dist.h>
+#include <flann/algorithms/kdtree_single_index.h>
+#include <flann/util/matrix.h>
+#include <flann/util/result_set.h>
+
+namespace ctrack {
+
+struct NNIndex::Impl {
+    using Index = flann::KDTreeSingleIndex<flann::L2<float>>;
+    Impl(float *data, int n, int dim)
+        : matrix(data, (size_t)n, (size_t)dim),
+          index(matrix, flann::KDTreeSingleIndexParams(8, false))
+    {
+        index.buildIndex();
+    }
+    flann::Matrix<float> matrix;
+    Index index;
+};
+
+NNIndex::NNIndex() = default;
+NNIndex::~NNIndex() = default;
+
+NNIndex::NNIndex(const NNIndex &other)
+{
+    *this = other;
+}
+
+NNIndex &NNIndex::operator=(const NNIndex &other)
+{
+    if (this == &other)
+        return *this;
+    if (other.n_ == 0) {
+        impl_.reset();
+        points_.clear();
+        n_ = dim_ = 0;
+        return *this;
+    }
+    build(other.points_.data(), other.n_, other.dim_);
+    return *this;
+}
+
+void NNIndex::build(const float *points, int n, int dim)
+{
+    impl_.reset();
+    points_.assign(points, points + (size_t)n * dim);
+    n_ = n;
+    dim_ = dim;
+    if (n > 0)
+        impl_.reset(new Impl(points_.data(), n, dim));
+}
+
+void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps) const
+{
+    flann::KNNSimpleResultSet<float> result(1);
+    flann::SearchParams params(-1, eps);
+    for (int q = 0; q < nq; q++) {
+        result.clear();
+        impl_->index.findNeighbors(result, queries + (size_t)q * dim_, params);
+        size_t i = 0;
+        float d = 0;
+        result.copy(&i, &d, 1);
+        index[q] = (int)i;
+        dist2[q] = d;
+    }
+}
+
+size_t NNIndex::memory_bytes() const
+{
+    // The tree's nodes are FLANN's; about two per leaf of 8 points.
+    return points_.capacity() * sizeof(float) + (n_ ? (size_t)n_ / 4 * 64 + 256 : 0);
+}
+
+} // namespace ctrack

@@ -1,0 +1,299 @@
+// Appearance: DDIS with FLANN against a brute-force reference, the
+// approximate search's tolerance, and what DDIS tells apart on real
+// PETS09-S2L1 crossings chosen from the ground truth (internal API).
+#include <check.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "appearance.h"
+#include "input.h"
+
+using namespace ctrack;
+
+static std::string data_dir;
+
+namespace {
+
+struct Image {
+    int w = 0, h = 0;
+    std::vector<uint8_t> buf;
+    Planes planes() const
+    {
+        Planes p;
+        p.width = w;
+        p.height = h;
+        p.y = buf.data();
+        p.u = buf.data() + (size_t)w * h;
+        p.v = p.u + (size_t)((w + 1) / 2) * ((h + 1) / 2);
+        p.y_stride = w;
+        p.u_stride = p.v_stride = (w + 1) / 2;
+        p.color = true;
+        return p;
+    }
+};
+
+// One crossing: two people a, b, apart before and after; boxes[0..3] are
+// a before, b before, a after, b after.
+struct Crossing {
+    std::string name;
+    Image frames[2];
+    double boxes[4][4];
+    std::vector<float> desc[4];
+};
+
+std::vector<Crossing> load_crossings()
+{
+    std::vector<Crossing> out;
+    std::string dir = data_dir + "/pets09-crops/";
+    FILE *f = std::fopen((dir + "crossings.csv").c_str(), "r");
+    ck_assert_msg(f, "cannot open %scrossings.csv", dir.c_str());
+    char line[1024];
+    while (std::fgets(line, sizeof line, f)) {
+        if (line[0] == '#')
+            continue;
+        Crossing c;
+        char name[128];
+        int frame;
+        double *b = &c.boxes[0][0];
+        if (std::sscanf(line,
+                        "%127[^,],%d,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf",
+                        name, &frame, b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7, b + 8,
+                        b + 9, b + 10, b + 11, b + 12, b + 13, b + 14, b + 15) != 18)
+            continue;
+        c.name = name;
+        ct_input_params ip = {0, 0, CT_FORMAT_I420};
+        ct_input *in = nullptr;
+        ct_input_info info;
+        char err[256];
+        ck_assert_msg(ct_input_open((dir + c.name + ".y4m").c_str(), &ip, &in, &info, err,
+                                    sizeof err) == 0, "%s", err);
+        for (int k = 0; k < 2; k++) {
+            ct_frame fr;
+            ck_assert_int_eq(ct_input_read(in, &fr, err, sizeof err), 1);
+            c.frames[k].w = fr.width;
+            c.frames[k].h = fr.height;
+            c.frames[k].buf.assign(fr.planes[0],
+                                   fr.planes[0] + ct_frame_bytes(CT_FORMAT_I420, fr.width, fr.height));
+        }
+        ct_input_close(in);
+        for (int i = 0; i < 4; i++) {
+            c.desc[i].resize((size_t)kPoints * kDescDim);
+            const double *x = c.boxes[i];
+            describe(c.frames[i / 2].planes(), x[0], x[1], x[2], x[3], c.desc[i].data());
+        }
+        out.push_back(std::move(c));
+    }
+    std::fclose(f);
+    ck_assert_int_ge((int)out.size(), 5);
+    return out;
+}
+
+// Brute force: each query's nearest point (the first of equals) and the
+// squared distance.
+void brute_force(const float *p, const float *q, int *index, float *dist2)
+{
+    for (int j = 0; j < kPoints; j++) {
+        float best = INFINITY;
+        int bi = -1;
+        for (int i = 0; i < kPoints; i++) {
+            float d = 0;
+            for (int k = 0; k < kDescDim; k++) {
+                float t = q[j * kDescDim + k] - p[i * kDescDim + k];
+                d += t * t;
+            }
+            if (d < best) {
+                best = d;
+                bi = i;
+            }
+        }
+        index[j] = bi;
+        dist2[j] = best;
+    }
+}
+
+// DDIS from given neighbours, straight from the formula.
+double ddis_of(const int *index)
+{
+    int kappa[kPoints] = {0};
+    for (int j = 0; j < kPoints; j++)
+        kappa[index[j]]++;
+    double s = 0;
+    for (int j = 0; j < kPoints; j++) {
+        int i = index[j];
+        double dx = i % kGridX - j % kGridX, dy = i / kGridX - j / kGridX;
+        s += std::exp(1.0 - kappa[i]) / (1 + std::sqrt(dx * dx + dy * dy));
+    }
+    return s / kPoints;
+}
+
+} // namespace
+
+// On random descriptors (no ties) exact FLANN search gives exactly the
+// brute-force DDIS.
+START_TEST(exact_search_equals_brute_force_on_random_points)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 255);
+    std::vector<float> p((size_t)kPoints * kDescDim), q(p.size());
+    Ddis d;
+    for (int trial = 0; trial < 50; trial++) {
+        for (float &x : p)
+            x = u(rng);
+        for (float &x : q)
+            x = u(rng);
+        Template t;
+        t.build(p.data());
+        int index[kPoints];
+        float dist2[kPoints];
+        brute_force(p.data(), q.data(), index, dist2);
+        ck_assert_double_eq_tol(d.ddis(t, q.data()), ddis_of(index), 1e-12);
+    }
+}
+END_TEST
+
+// On real crops (with ties: pixel values repeat) exact FLANN search finds
+// neighbours at the brute-force distance for every query, and the same DDIS
+// whenever no query had two neighbours at the same distance.
+START_TEST(exact_search_equals_brute_force_on_real_crops)
+{
+    int untied = 0;
+    for (const Crossing &c : load_crossings())
+        for (int a = 0; a < 2; a++)
+            for (int b = 2; b < 4; b++) {
+                Template t;
+                t.build(c.desc[a].data());
+                int fi[kPoints], bi[kPoints];
+                float fd[kPoints], bd[kPoints];
+                t.index.search(c.desc[b].data(), kPoints, fi, fd);
+                brute_force(c.desc[a].data(), c.desc[b].data(), bi, bd);
+                bool ties = false;
+                for (int j = 0; j < kPoints; j++) {
+                    ck_assert_msg(std::fabs(fd[j] - bd[j]) <= 1e-3f * std::max(1.0f, bd[j]),
+                                  "%s: query %d at %g, brute force %g", c.name.c_str(), j,
+                                  (double)fd[j], (double)bd[j]);
+                    ties |= fi[j] != bi[j];
+                }
+                Ddis d;
+                if (!ties) {
+                    ck_assert_double_eq_tol(d.ddis(t, c.desc[b].data()), ddis_of(bi), 1e-12);
+                    untied++;
+                }
+            }
+    ck_assert_int_gt(untied, 0);
+}
+END_TEST
+
+// Approximate search (eps = 1: a neighbour within twice the nearest
+// distance) stays within 0.05 of the exact DDIS on real crops.
+START_TEST(approximate_search_within_tolerance)
+{
+    Ddis d;
+    double worst = 0;
+    for (const Crossing &c : load_crossings())
+        for (int a = 0; a < 2; a++)
+            for (int b = 0; b < 4; b++) {
+                Template t;
+                t.build(c.desc[a].data());
+                double exact = d.ddis(t, c.desc[b].data());
+                double approx = d.ddis(t, c.desc[b].data(), 1.0f);
+                worst = std::max(worst, std::fabs(exact - approx));
+            }
+    ck_assert_msg(worst <= 0.05, "approximate DDIS off by %.3f", worst);
+}
+END_TEST
+
+// A patch is most like itself: DDIS 1 (at least 0.9 where equal
+// descriptors tie), above every other person's and the same person's a
+// dozen frames later.
+START_TEST(highest_for_the_same_patch)
+{
+    Ddis d;
+    for (const Crossing &c : load_crossings())
+        for (int a = 0; a < 4; a++) {
+            Template t;
+            t.build(c.desc[a].data());
+            double self = d.ddis(t, c.desc[a].data());
+            ck_assert_msg(self >= 0.9, "%s: DDIS with itself %.3f", c.name.c_str(), self);
+            for (int b = 0; b < 4; b++)
+                if (b != a)
+                    ck_assert(d.ddis(t, c.desc[b].data()) < self);
+        }
+}
+END_TEST
+
+// Each person's template ranks them above the other person after the
+// crossing, in all but at most one of the 2 x (number of crossings) cases,
+// and the right pairing always scores more than the swapped one, which is
+// what association compares.
+START_TEST(ranks_the_right_person_after_a_crossing)
+{
+    Ddis d;
+    int right = 0, cases = 0;
+    for (const Crossing &c : load_crossings()) {
+        Template a, b;
+        a.build(c.desc[0].data());
+        b.build(c.desc[1].data());
+        double aa = d.ddis(a, c.desc[2].data()), ab = d.ddis(a, c.desc[3].data());
+        double bb = d.ddis(b, c.desc[3].data()), ba = d.ddis(b, c.desc[2].data());
+        right += (aa > ab) + (bb > ba);
+        cases += 2;
+        ck_assert_msg(aa + bb > ab + ba, "%s: right pairing %.3f, swapped %.3f", c.name.c_str(),
+                      aa + bb, ab + ba);
+    }
+    ck_assert_msg(right >= cases - 1, "%d of %d ranked right", right, cases);
+}
+END_TEST
+
+// DDIS and DIS (eq. 3, the same neighbours without the deformation term):
+// DDIS never exceeds DIS (each of its terms is at most what DIS counts, so it
+// falls at least as fast when a person deforms: see docs/appearance.md), but
+// it tells the same, deformed person from another one by a wider margin.
+START_TEST(against_dis)
+{
+    Ddis d;
+    double ddis_ratio = 0, dis_ratio = 0;
+    int n = 0;
+    for (const Crossing &c : load_crossings())
+        for (int a = 0; a < 2; a++) {
+            Template t;
+            t.build(c.desc[a].data());
+            const float *same = c.desc[a + 2].data(), *other = c.desc[3 - a].data();
+            for (const float *q : {same, other})
+                ck_assert(d.ddis(t, q) <= d.dis(t, q) + 1e-12);
+            ddis_ratio += d.ddis(t, same) / d.ddis(t, other);
+            dis_ratio += d.dis(t, same) / d.dis(t, other);
+            n++;
+        }
+    ck_assert_msg(ddis_ratio / n > dis_ratio / n,
+                  "same/other: DDIS %.3f, DIS %.3f", ddis_ratio / n, dis_ratio / n);
+}
+END_TEST
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: check_appearance DATA_DIR (tests/data)\n");
+        return 2;
+    }
+    data_dir = argv[1];
+    Suite *s = suite_create("appearance");
+    TCase *tc = tcase_create("appearance");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, exact_search_equals_brute_force_on_random_points);
+    tcase_add_test(tc, exact_search_equals_brute_force_on_real_crops);
+    tcase_add_test(tc, approximate_search_within_tolerance);
+    tcase_add_test(tc, highest_for_the_same_patch);
+    tcase_add_test(tc, ranks_the_right_person_after_a_crossing);
+    tcase_add_test(tc, against_dis);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
