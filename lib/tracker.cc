@@ -195,6 +195,7 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     t.h.update(d.height, sd);
     t.hits++;
     t.last_update_us = t_us;
+    t.seen_h = d.height;
     t.det_index = index;
     t.class_id = d.class_id;
     t.score = d.score;
@@ -218,6 +219,7 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
     t.age = 1;
     t.hits = 1;
     t.last_update_us = t_us;
+    t.seen_h = d.height;
     t.det_index = index;
     t.class_id = d.class_id;
     t.score = d.score;
@@ -308,7 +310,8 @@ void Engine::reidentify(const ct_detection *dets)
     for (int i = 0; i < n; i++) {
         const Track &t = tracks_[pool_tracks_[i]];
         const double lost_s = (double)(last_us_ - t.last_update_us) * 1e-6;
-        const double h = std::max(t.h.x, kMinSide);
+        // The size the person had when last seen: the coasted one drifts.
+        const double h = std::max<double>(t.seen_h, kMinSide);
         const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
         for (int j = 0; j < m; j++) {
             const ct_detection &d = dets[pool_dets_[j]];

@@ -26,6 +26,7 @@ struct Track {
     Axis cx, cy, w, h;
     int age = 0, hits = 0;
     int64_t last_update_us = 0;
+    float seen_h = 0; // the height of the last detection
     int det_index = -1;
     int class_id = 0;
     float score = 0;
