@@ -37,6 +37,7 @@ ct_config default_config()
     c.appearance_weight = 0.1f;
     c.reid_min_similarity = 0.1f;
     c.reid_max_speed = 1.5f;
+    c.candidate_min_score = 0.35f;
     return c;
 }
 
@@ -73,10 +74,6 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     if (c.source != CT_SOURCE_DETECTIONS && c.source != CT_SOURCE_PIXELS)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.source: %d is not a ct_source value", (int)c.source);
-    if (c.source == CT_SOURCE_PIXELS)
-        return fail(msg, msg_len, CT_ERROR_UNSUPPORTED,
-                    "config.source: CT_SOURCE_PIXELS is not available in this version; "
-                    "give detections (CT_SOURCE_DETECTIONS)");
     if (!in_range(c.high_score, 0, 1))
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.high_score: %g is not in [0, 1]", (double)c.high_score);
@@ -154,6 +151,10 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.reid_max_speed: %g is not in [0, 1000] box heights/s",
                     (double)c.reid_max_speed);
+    if (!in_range(c.candidate_min_score, c.low_score, 1))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.candidate_min_score: %g is not in [low_score = %g, 1]",
+                    (double)c.candidate_min_score, (double)c.low_score);
     if (out)
         *out = c;
     return CT_OK;

@@ -19,8 +19,9 @@
 #define CT_STR(x) CT_STR2(x)
 
 struct ct_tracker {
-    explicit ct_tracker(const ct_config &cfg) : engine(cfg) {}
+    explicit ct_tracker(const ct_config &cfg) : engine(cfg), source(cfg.source) {}
     ctrack::Engine engine;
+    int source;
     uint64_t steps = 0, feed_ns = 0, validate_ns = 0;
     // The message of the last failed call. A fixed buffer: reporting an
     // error never allocates.
@@ -50,6 +51,39 @@ void clear_error(const ct_tracker *t)
 {
     t->error[0] = '\0';
 }
+
+// Copies items into the caller's array of elements of elem_size bytes (at
+// least sizeof(T); a larger element's tail is zeroed), or reports the count
+// needed.
+template <typename T>
+int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char *what,
+             void *out, size_t capacity, size_t elem_size, size_t *count)
+{
+    char *msg = tracker->error;
+    const size_t len = sizeof tracker->error;
+    if (!count)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
+    *count = 0;
+    if (elem_size < sizeof(T) || elem_size > (1u << 16))
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
+                            "newer header)",
+                            elem_size, what, sizeof(T));
+    if (capacity > 0 && !out)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "out: NULL with capacity %zu", capacity);
+    *count = items.size();
+    if (capacity < items.size())
+        return ctrack::fail(msg, len, CT_ERROR_BUFFER_TOO_SMALL,
+                            "capacity: %zu %ss, %zu needed", capacity, what, items.size());
+    unsigned char *dst = static_cast<unsigned char *>(out);
+    for (size_t i = 0; i < items.size(); i++, dst += elem_size) {
+        std::memset(dst, 0, elem_size);
+        std::memcpy(dst, &items[i], sizeof(T));
+    }
+    return CT_OK;
+}
+
 
 } // namespace
 
@@ -147,6 +181,11 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     st = ctrack::check_detections(dets, n, msg, len);
     if (st != CT_OK)
         return st;
+    if (n > 0 && tracker->source == CT_SOURCE_PIXELS)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "dets: %zu given, but this tracker finds its candidates in the "
+                            "pixels (config.source = CT_SOURCE_PIXELS)",
+                            n);
     ctrack::Engine &e = tracker->engine;
     if (e.has_time() && f.timestamp_us <= e.last_time())
         return ctrack::fail(msg, len, CT_ERROR_BAD_STATE,
@@ -166,36 +205,25 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     return st;
 }
 
+
 int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
                           size_t elem_size, size_t *count)
 {
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
     clear_error(tracker);
-    char *msg = tracker->error;
-    const size_t len = sizeof tracker->error;
-    if (!count)
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
-    *count = 0;
-    if (elem_size < sizeof(ct_track) || elem_size > (1u << 16))
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                            "elem_size: %zu is not sizeof(ct_track) (%zu, or more from a "
-                            "newer header)",
-                            elem_size, sizeof(ct_track));
-    if (capacity > 0 && !out)
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                            "out: NULL with capacity %zu", capacity);
-    const auto &tracks = tracker->engine.reported();
-    *count = tracks.size();
-    if (capacity < tracks.size())
-        return ctrack::fail(msg, len, CT_ERROR_BUFFER_TOO_SMALL,
-                            "capacity: %zu tracks, %zu needed", capacity, tracks.size());
-    unsigned char *dst = reinterpret_cast<unsigned char *>(out);
-    for (size_t i = 0; i < tracks.size(); i++, dst += elem_size) {
-        std::memset(dst, 0, elem_size);
-        std::memcpy(dst, &tracks[i], sizeof(ct_track));
-    }
-    return CT_OK;
+    return copy_out(tracker, tracker->engine.reported(), "track", out, capacity, elem_size,
+                    count);
+}
+
+int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out, size_t capacity,
+                              size_t elem_size, size_t *count)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    return copy_out(tracker, tracker->engine.candidates(), "candidate", out, capacity,
+                    elem_size, count);
 }
 
 const char *ct_stage_name(int stage)
@@ -208,6 +236,9 @@ const char *ct_stage_name(int stage)
     case CT_STAGE_REPORT: return "report";
     case CT_STAGE_MEAN_SHIFT: return "mean_shift";
     case CT_STAGE_APPEARANCE: return "appearance";
+    case CT_STAGE_BACKGROUND: return "background";
+    case CT_STAGE_BLOBS: return "blobs";
+    case CT_STAGE_CLASSIFY: return "classify";
     default: return nullptr;
     }
 }

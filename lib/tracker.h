@@ -8,6 +8,9 @@
 #include "ctrack/ctrack.h"
 #include "appearance.h"
 #include "assign.h"
+#include "background.h"
+#include "blobs.h"
+#include "contour_template.h"
 #include "meanshift.h"
 #include "motion.h"
 #include "planes.h"
@@ -27,6 +30,10 @@ struct Track {
     int age = 0, hits = 0;
     int64_t last_update_us = 0;
     float seen_h = 0; // the height of the last detection
+    // Where it started, and whether it has since moved half its height: a
+    // track that never moved may be a ghost of the background model.
+    double start_x = 0, start_y = 0;
+    bool moved = false;
     int det_index = -1;
     int class_id = 0;
     float score = 0;
@@ -63,6 +70,7 @@ public:
     void reset();
 
     const std::vector<ct_track> &reported() const { return reported_; }
+    const std::vector<ct_candidate> &candidates() const { return candidates_; }
     size_t live_tracks() const { return tracks_.size(); }
     uint64_t mean_shift_runs() const { return ms_runs_; }
     uint64_t ddis_runs() const { return ddis_runs_; }
@@ -85,6 +93,11 @@ private:
     double similarity(const Track &t, int det);
     void reidentify(const ct_detection *dets);
     void learn_templates(int64_t t_us);
+    // Source pixels: candidates from the background model and the contour
+    // template, into cand_dets_ (as detections) and candidates_.
+    void find_candidates(const Planes &img);
+    // The centroid of the foreground inside b, or its centre.
+    void barycenter(const Box &b, float *x, float *y) const;
     bool occluded(size_t i) const;
     void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
                const ct_detection *dets, double min_iou);
@@ -119,6 +132,14 @@ private:
     std::vector<char> slot_used_;
     std::vector<float> det_desc_;
     Ddis ddis_;
+
+    // Source pixels.
+    Background background_;
+    BlobFinder blobs_;
+    bool have_mask_ = false; // this step
+    std::vector<Rect> frozen_, predicted_, blob_rects_;
+    std::vector<ct_detection> cand_dets_;
+    std::vector<ct_candidate> candidates_;
     std::vector<double> cost_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;

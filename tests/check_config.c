@@ -120,7 +120,7 @@ typedef struct {
 } bad_case;
 
 static void bad_source(ct_config *c) { c->source = 7; }
-static void pixels_source(ct_config *c) { c->source = CT_SOURCE_PIXELS; }
+static void low_candidate_score(ct_config *c) { c->candidate_min_score = c->low_score / 2; }
 static void nan_high(ct_config *c) { c->high_score = NAN; }
 static void high_above_one(ct_config *c) { c->high_score = 1.5f; }
 static void low_above_high(ct_config *c) { c->low_score = c->high_score + 0.1f; }
@@ -154,7 +154,7 @@ static void inf_reid_speed(ct_config *c) { c->reid_max_speed = INFINITY; }
 
 static const bad_case bad_cases[] = {
     {"config.source", bad_source, CT_ERROR_INVALID_ARGUMENT},
-    {"config.source", pixels_source, CT_ERROR_UNSUPPORTED},
+    {"config.candidate_min_score", low_candidate_score, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", nan_high, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", high_above_one, CT_ERROR_INVALID_ARGUMENT},
     {"config.low_score", low_above_high, CT_ERROR_INVALID_ARGUMENT},

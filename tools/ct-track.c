@@ -48,6 +48,7 @@ static const param_def params[] = {
     {"appearance_weight", 'f', offsetof(ct_config, appearance_weight), "weight of 1 - DDIS in the cost"},
     {"reid_min_similarity", 'f', offsetof(ct_config, reid_min_similarity), "DDIS to re-identify a lost track"},
     {"reid_max_speed", 'f', offsetof(ct_config, reid_max_speed), "re-identification reach, box heights/s"},
+    {"candidate_min_score", 'f', offsetof(ct_config, candidate_min_score), "pixels only: vote that starts tracks"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)
@@ -76,7 +77,8 @@ static void usage(FILE *out)
             "\n"
             "options:\n"
             "  -d, --detections FILE  MOTChallenge detections (frame,-1,left,top,w,h,score,...),\n"
-            "                         frames 1-based. Without INPUT: detections only.\n"
+            "                         frames 1-based. Without INPUT: detections only. Without\n"
+            "                         this option ct-track finds people in the pixels itself.\n"
             "  -s, --size WxH         raw video size; with detections only, the image size\n"
             "  -f, --format FMT       raw video format: i420 (default), nv12, gray\n"
             "  -r, --fps RATE         frame rate (default 25; a Y4M header's rate unless given)\n"
@@ -90,6 +92,9 @@ static void usage(FILE *out)
             "                         a terminal)\n"
             "  -q, --quiet            no progress\n"
             "      --stats            print the library's time per stage at the end\n"
+            "      --candidates FILE  without --detections: write the blobs found in the\n"
+            "                         pixels, their contour-template vote and eq. (1)'s\n"
+            "                         distance per region, one line per blob and frame\n"
             "  -h, --help             this help\n"
             "  -V, --version          print the version\n"
             "\n"
@@ -181,13 +186,13 @@ int main(int argc, char **argv)
 {
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
-    const char *det_path = NULL, *out_path = NULL, *overlay_path = NULL;
+    const char *det_path = NULL, *out_path = NULL, *overlay_path = NULL, *candidates_path = NULL;
     int width = 0, height = 0, no_pixels = 0;
     int progress = isatty(STDERR_FILENO);
     uint32_t format = CT_FORMAT_I420;
     double fps = 0;
 
-    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS };
+    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES };
     int stats = 0;
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
@@ -200,6 +205,7 @@ int main(int argc, char **argv)
         {"param", required_argument, NULL, 'p'},
         {"progress", no_argument, NULL, OPT_PROGRESS},
         {"stats", no_argument, NULL, OPT_STATS},
+        {"candidates", required_argument, NULL, OPT_CANDIDATES},
         {"quiet", no_argument, NULL, 'q'},
         {"help", no_argument, NULL, 'h'},
         {"version", no_argument, NULL, 'V'},
@@ -243,6 +249,7 @@ int main(int argc, char **argv)
             break;
         case OPT_PROGRESS: progress = 1; break;
         case OPT_STATS: stats = 1; break;
+        case OPT_CANDIDATES: candidates_path = optarg; break;
         case 'q': progress = 0; break;
         case 'h': usage(stdout); return 0;
         case 'V': printf("ct-track %s\n", ct_version_string()); return 0;
@@ -258,12 +265,14 @@ int main(int argc, char **argv)
         usage(stderr);
         return EXIT_USAGE;
     }
+    /* Without detections, the tracker finds people in the pixels. */
     if (!det_path) {
-        fprintf(stderr,
-                "ct-track: tracking from the pixels alone is not available in ctrack %s yet; "
-                "give detections with --detections FILE\n",
-                ct_version_string());
-        return EXIT_USAGE;
+        if (no_pixels) {
+            fprintf(stderr, "ct-track: --no-pixels needs --detections: without either, there "
+                            "is nothing to track\n");
+            return EXIT_USAGE;
+        }
+        cfg.source = CT_SOURCE_PIXELS;
     }
 
     if (overlay_path && !strcmp(overlay_path, "-") && (!out_path || !strcmp(out_path, "-"))) {
@@ -280,13 +289,17 @@ int main(int argc, char **argv)
 
     int rc = EXIT_RUNTIME;
     ct_detfile df;
+    memset(&df, 0, sizeof df);
     ct_input *in = NULL;
+    FILE *cand_out = NULL;
+    ct_candidate *cands = NULL;
+    size_t cands_cap = 0;
     ct_tracker *tracker = NULL;
     ct_overlay *overlay = NULL;
     FILE *out = NULL;
     ct_track *tracks = NULL;
     size_t tracks_cap = 0;
-    if (ct_detfile_load(det_path, &df, msg, sizeof msg) < 0) {
+    if (det_path && ct_detfile_load(det_path, &df, msg, sizeof msg) < 0) {
         fprintf(stderr, "ct-track: %s\n", msg);
         return EXIT_RUNTIME;
     }
@@ -315,6 +328,15 @@ int main(int argc, char **argv)
     if (ct_tracker_create(&cfg, &tracker) != CT_OK) {
         fprintf(stderr, "ct-track: cannot create the tracker\n");
         goto done;
+    }
+    if (candidates_path) {
+        cand_out = fopen(candidates_path, "w");
+        if (!cand_out) {
+            fprintf(stderr, "ct-track: cannot write '%s': %s\n", candidates_path, strerror(errno));
+            goto done;
+        }
+        fprintf(cand_out, "# frame,left,top,width,height,score,yes,voters,head,neck,shoulders,"
+                          "chest,back,abdomen,buttocks,upper_limbs,lower_limbs\n");
     }
     out = out_path ? fopen(out_path, "w") : stdout;
     if (!out) {
@@ -370,8 +392,8 @@ int main(int argc, char **argv)
         k++;
         /* Timestamps from the frame index and the rate, in microseconds. */
         frame.timestamp_us = (int64_t)llround((double)(k - 1) * 1e6 * rate_den / rate_num);
-        size_t n;
-        const ct_detection *dets = ct_detfile_frame(&df, (int)k, &n);
+        size_t n = 0;
+        const ct_detection *dets = det_path ? ct_detfile_frame(&df, (int)k, &n) : NULL;
         int st = ct_tracker_feed(tracker, &frame, dets, n);
         if (st != CT_OK) {
             fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
@@ -395,6 +417,28 @@ int main(int argc, char **argv)
             fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
                     ct_tracker_last_error(tracker));
             goto done;
+        }
+        if (cand_out) {
+            size_t nc = 0;
+            st = ct_tracker_get_candidates(tracker, cands, cands_cap, sizeof *cands, &nc);
+            if (st == CT_ERROR_BUFFER_TOO_SMALL) {
+                ct_candidate *nb = realloc(cands, nc * 2 * sizeof *nb);
+                if (!nb) {
+                    fprintf(stderr, "ct-track: out of memory\n");
+                    goto done;
+                }
+                cands = nb;
+                cands_cap = nc * 2;
+                st = ct_tracker_get_candidates(tracker, cands, cands_cap, sizeof *cands, &nc);
+            }
+            for (size_t i = 0; st == CT_OK && i < nc; i++) {
+                const ct_candidate *c = &cands[i];
+                fprintf(cand_out, "%lld,%.0f,%.0f,%.0f,%.0f,%.3f,%d,%d", k, c->left, c->top,
+                        c->width, c->height, c->score, (int)c->votes_yes, (int)c->voters);
+                for (int g = 0; g < CT_REGIONS; g++)
+                    fprintf(cand_out, ",%.4f", c->region_distance[g]);
+                fputc('\n', cand_out);
+            }
         }
         for (size_t i = 0; i < count; i++) {
             const ct_track *t = &tracks[i];
@@ -429,7 +473,7 @@ int main(int argc, char **argv)
     }
     if (stats)
         print_stats(tracker);
-    if (df.max_frame > k)
+    if (det_path && df.max_frame > k)
         fprintf(stderr, "ct-track: warning: detections go to frame %d, the video has %lld\n",
                 df.max_frame, k);
     if (fflush(out) != 0 || ferror(out)) {
@@ -454,6 +498,11 @@ done:
             rc = EXIT_RUNTIME;
         }
     }
+    if (cand_out && fclose(cand_out) != 0 && rc == 0) {
+        fprintf(stderr, "ct-track: error writing '%s': %s\n", candidates_path, strerror(errno));
+        rc = EXIT_RUNTIME;
+    }
+    free(cands);
     free(tracks);
     ct_tracker_destroy(tracker);
     ct_input_close(in);

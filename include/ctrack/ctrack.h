@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 3
+#define CT_VERSION_MINOR 4
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -84,8 +84,9 @@ typedef enum ct_source {
     /* The host's detections given to ct_tracker_feed(). A feed with n == 0
      * means "the detector ran and found nobody". The default. */
     CT_SOURCE_DETECTIONS = 0,
-    /* The pixels (background model and contour template). Not in this
-     * version: ct_tracker_create() answers CT_ERROR_UNSUPPORTED. */
+    /* The pixels (0.4.0): a background model finds moving blobs and the
+     * contour template scores how pedestrian-like each is; the host gives no
+     * detections (n must be 0). */
     CT_SOURCE_PIXELS = 1
 } ct_source;
 
@@ -161,6 +162,13 @@ typedef struct ct_config {
      * in its box heights per second it has been lost (at least one box
      * height). */
     float reid_max_speed;
+
+    /* Added in 0.4.0. */
+
+    /* With source CT_SOURCE_PIXELS, what high_score is to a detector's
+     * scores: candidates whose contour-template vote reaches it, in [0, 1],
+     * are matched first and may start tracks. */
+    float candidate_min_score;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
@@ -271,6 +279,29 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
 /* ------------------------------------------------------------------------ */
+/* Candidates found in the pixels (source CT_SOURCE_PIXELS), 0.4.0. */
+
+#define CT_REGIONS 9
+
+typedef struct ct_candidate {
+    float left, top, width, height; /* pixels */
+    /* The contour template's vote: yes votes over voting regions (0 with
+     * fewer than 5 voters); candidates feed the tracker with this score. */
+    float score;
+    int32_t votes_yes, voters;
+    /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,
+     * abdomen, buttocks, upper limbs, lower limbs): the mean distance, in
+     * box widths, between the blob's contour and the best silhouette's; -1
+     * where the region abstained (occluded or out of the frame). */
+    float region_distance[CT_REGIONS];
+} ct_candidate;
+
+/* Copies the candidates of the last step, like ct_tracker_get_tracks() (in
+ * the order found). With source CT_SOURCE_DETECTIONS there are none. */
+CT_API int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out,
+                                     size_t capacity, size_t elem_size, size_t *count);
+
+/* ------------------------------------------------------------------------ */
 /* Timing and memory, for benchmarks and monitoring. */
 
 /* The stages of a step, each timed by the library. Values are pinned; later
@@ -282,7 +313,10 @@ typedef enum ct_stage {
     CT_STAGE_LIFECYCLE = 3, /* updates, losses, removals, births */
     CT_STAGE_REPORT = 4,    /* building the reported tracks */
     CT_STAGE_MEAN_SHIFT = 5, /* colour models and mean shift (0.2.0) */
-    CT_STAGE_APPEARANCE = 6  /* descriptors, DDIS, templates (0.3.0) */
+    CT_STAGE_APPEARANCE = 6, /* descriptors, DDIS, templates (0.3.0) */
+    CT_STAGE_BACKGROUND = 7, /* background model, foreground mask (0.4.0) */
+    CT_STAGE_BLOBS = 8,      /* morphology, contours, merges and splits */
+    CT_STAGE_CLASSIFY = 9    /* contour template and region votes */
 } ct_stage;
 
 #define CT_STATS_MAX_STAGES 16

@@ -58,6 +58,7 @@ class Config(C.Structure):
         ("appearance_weight", C.c_float),
         ("reid_min_similarity", C.c_float),
         ("reid_max_speed", C.c_float),
+        ("candidate_min_score", C.c_float),
     ]
 
 
@@ -106,6 +107,20 @@ class Track(C.Structure):
 
 
 STATS_MAX_STAGES = 16
+REGIONS = 9
+
+
+class Candidate(C.Structure):
+    _fields_ = [
+        ("left", C.c_float),
+        ("top", C.c_float),
+        ("width", C.c_float),
+        ("height", C.c_float),
+        ("score", C.c_float),
+        ("votes_yes", C.c_int32),
+        ("voters", C.c_int32),
+        ("region_distance", C.c_float * REGIONS),
+    ]
 
 
 class Stats(C.Structure):
@@ -142,6 +157,8 @@ def declare(lib):
         "ct_tracker_last_error": (C.c_char_p, [C.c_void_p]),
         "ct_tracker_get_stats": (C.c_int, [C.c_void_p, P(Stats)]),
         "ct_stage_name": (C.c_char_p, [C.c_int]),
+        "ct_tracker_get_candidates": (C.c_int, [C.c_void_p, C.c_void_p, C.c_size_t, C.c_size_t,
+                                                P(C.c_size_t)]),
     }
     for name, (res, args) in sig.items():
         f = getattr(lib, name)

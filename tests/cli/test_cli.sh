@@ -101,6 +101,18 @@ else
     printf 'YUV4MPEG2 W640 H480 F25:1 C420jpeg\nFRAMX\n' > "$tmp/badframe.y4m"
     expect "bad y4m frame header" 1 "bad Y4M frame header" -- "$ct" -d "$tud/det/det.txt" "$tmp/badframe.y4m"
     expect "raw without --size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" "$tmp/tud.i420"
+    # From the pixels alone: tracks, and the candidates with their votes.
+    expect "pixels only" 0 "" -- "$ct" -q -o "$tmp/px.txt" --candidates "$tmp/cand.txt" "$tmp/tud.y4m"
+    [ -s "$tmp/px.txt" ] && ok "pixels only writes tracks" || bad "pixels only writes tracks" "no tracks"
+    if awk -F, '!/^#/ && (NF != 17 || $1 < 1 || $1 > 71 || $4 <= 0 || $5 <= 0 || $6 < 0 || $6 > 1) {exit 1}' "$tmp/cand.txt" \
+        && [ "$(grep -vc '^#' "$tmp/cand.txt")" -gt 50 ]; then
+        ok "candidates file"
+    else
+        bad "candidates file" "$(head -3 "$tmp/cand.txt")"
+    fi
+    expect "pixels only from standard input" 0 "" -- sh -c "'$ct' -q - < '$tmp/tud.y4m' > '$tmp/px2.txt'"
+    same "pixels only, file and standard input" "$tmp/px.txt" "$tmp/px2.txt"
+
     # Pictures: --overlay writes every frame, as I420 Y4M of the input's size and rate.
     expect "overlay" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov.y4m" "$tmp/tud.y4m"
     [ "$(head -n 1 "$tmp/ov.y4m")" = "YUV4MPEG2 W640 H480 F25:1 Ip A1:1 C420jpeg" ] \
@@ -155,7 +167,8 @@ expect "empty detections" 0 "" -- "$ct" -q -d "$tmp/empty.txt" -s 640x480
 
 # --- options ---------------------------------------------------------------
 expect "no arguments" 2 "usage" -- "$ct"
-expect "pixels only is not there yet" 2 "--detections" -- "$ct" "$tud/video.mp4"
+expect "no pixels and no detections" 2 "--no-pixels needs --detections" -- "$ct" --no-pixels "$tmp/tiny.y4m"
+expect "an mp4 is not a video ct-track reads" 1 "is not Y4M" -- "$ct" "$tud/video.mp4"
 expect "two inputs" 2 "one INPUT" -- "$ct" -d "$tud/det/det.txt" a b
 expect "size 0x0" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 0x0
 expect "absurd size" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 100000x10

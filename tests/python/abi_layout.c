@@ -21,7 +21,7 @@ int main(void)
     FIELD(ct_config, mean_shift_max_time); FIELD(ct_config, model_learning_rate);
     FIELD(ct_config, mean_shift_coarse_below); FIELD(ct_config, appearance);
     FIELD(ct_config, appearance_weight); FIELD(ct_config, reid_min_similarity);
-    FIELD(ct_config, reid_max_speed);
+    FIELD(ct_config, reid_max_speed); FIELD(ct_config, candidate_min_score);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
@@ -45,6 +45,11 @@ int main(void)
     FIELD(ct_stats, stage_ns); FIELD(ct_stats, live_tracks); FIELD(ct_stats, memory_bytes);
     FIELD(ct_stats, mean_shift_runs); FIELD(ct_stats, ddis_runs);
     FIELD(ct_stats, template_builds);
+    first = 0;
+    printf("}, \"Candidate\": {\"sizeof\": %zu, ", sizeof(ct_candidate));
+    FIELD(ct_candidate, left); FIELD(ct_candidate, top); FIELD(ct_candidate, width);
+    FIELD(ct_candidate, height); FIELD(ct_candidate, score); FIELD(ct_candidate, votes_yes);
+    FIELD(ct_candidate, voters); FIELD(ct_candidate, region_distance);
     printf("}}\n");
     return 0;
 }

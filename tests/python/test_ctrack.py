@@ -49,8 +49,8 @@ def test_bad_parameters_raise_with_the_library_message():
     with pytest.raises(ctrack.CtrackError, match="config.high_score") as e:
         ctrack.Tracker(high_score=float("nan"))
     assert e.value.status == -1
-    with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
-        ctrack.Tracker(source=ctrack.SOURCE_PIXELS)
+    with pytest.raises(ctrack.CtrackError, match="config.candidate_min_score"):
+        ctrack.Tracker(candidate_min_score=0.01)
     with pytest.raises(TypeError, match="unknown parameter 'bogus'"):
         ctrack.Tracker(bogus=1)
     with pytest.raises(TypeError):

@@ -1,0 +1,44 @@
+// From the foreground mask to person-sized candidates: morphology, contours
+// (OpenCV), fragments merged, groups split. OpenCV's headers stay in
+// blobs.cc.
+#ifndef CTRACK_BLOBS_H
+#define CTRACK_BLOBS_H
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "background.h"
+
+namespace ctrack {
+
+class BlobFinder {
+public:
+    BlobFinder();
+    ~BlobFinder();
+    BlobFinder(const BlobFinder &) = delete;
+    BlobFinder &operator=(const BlobFinder &) = delete;
+
+    // Cleans the w x h mask (a closing) and returns the boxes of
+    // its blobs: those at least min_area pixels, fragments of one person
+    // (stacked one above the other) merged, and blobs wider than a person
+    // split, at the predicted boxes' centres when tracks are there, else
+    // into equal parts at the valleys of the column profile.
+    void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
+              std::vector<Rect> &out);
+    // The cleaned mask of the last find().
+    const uint8_t *cleaned() const;
+    size_t memory_bytes() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Person shape in working pixels: height over width of an upright person is
+// at least this...
+constexpr double kPersonAspect = 2.0;
+
+} // namespace ctrack
+
+#endif

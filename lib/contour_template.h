@@ -1,0 +1,61 @@
+// The paper's multiregion contour template (section 2.1-2.2, eq. 1) and its
+// region voting: is a blob shaped like a pedestrian?
+#ifndef CTRACK_CONTOUR_TEMPLATE_H
+#define CTRACK_CONTOUR_TEMPLATE_H
+
+#include <cstdint>
+
+namespace ctrack {
+
+// A shape is its outer profile in its bounding box: for each of kRows rows,
+// the leftmost and rightmost foreground points, from the box's centre in box
+// heights (so a shape keeps its proportions). An empty row is marked by
+// Profile::kEmpty.
+constexpr int kRows = 64;
+constexpr int kRegions = 9;
+
+enum Region {
+    kHead, kNeck, kShoulders, kChest, kBack, kAbdomen, kButtocks, kUpperLimbs, kLowerLimbs
+};
+
+const char *region_name(int r);
+
+struct Profile {
+    static constexpr float kEmpty = -100;
+    float edge[kRows][2];
+    bool empty(int row) const { return edge[row][0] == kEmpty; }
+};
+
+// The profile of the foreground (non-zero) pixels of mask inside the box
+// [x0, x1) x [y0, y1).
+void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Profile *p);
+
+struct Vote {
+    // Eq. (1) per region: the mean distance between the candidate's profile
+    // points and the best template's, in box heights; negative where the
+    // region abstained (too few of its rows hold foreground).
+    float distance[kRegions];
+    int yes = 0, voters = 0;
+    float score = 0;  // yes / voters, 0 with fewer than kMinVoters voters
+    int silhouette = -1;
+};
+
+// The thresholds of eq. (1)'s regions: a region votes yes when its distance
+// is at most its threshold.
+struct RegionThresholds {
+    float t[kRegions];
+};
+const RegionThresholds &default_thresholds();
+
+// Votes with the closest silhouette of the library (the smallest mean
+// distance over the regions that vote), so that the distances reported do
+// not depend on the thresholds. A tie of votes (yes = no) is a no: score
+// 0.5 is not above the majority.
+Vote classify(const Profile &p, const RegionThresholds &th);
+
+// At least this many regions must vote for a score.
+constexpr int kMinVoters = 5;
+
+} // namespace ctrack
+
+#endif

@@ -1,0 +1,238 @@
+// The background model, blobs and the contour template (internal API), on
+// synthetic sequences and generated silhouettes.
+#include <check.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "background.h"
+#include "blobs.h"
+#include "contour_template.h"
+
+using namespace ctrack;
+
+namespace {
+
+constexpr int W = 160, H = 120;
+
+struct Gray {
+    std::vector<uint8_t> y = std::vector<uint8_t>(W * H);
+    Planes planes() const
+    {
+        Planes p;
+        p.width = W;
+        p.height = H;
+        p.y = y.data();
+        p.y_stride = W;
+        p.color = false;
+        return p;
+    }
+    void fill(int level)
+    {
+        for (int r = 0; r < H; r++)
+            for (int c = 0; c < W; c++)
+                y[r * W + c] = (uint8_t)(level + (r * 7 + c * 13) % 5); // a little texture
+    }
+    void square(int x0, int y0, int size, int level)
+    {
+        for (int r = y0; r < y0 + size; r++)
+            for (int c = x0; c < x0 + size; c++)
+                y[r * W + c] = (uint8_t)level;
+    }
+};
+
+int foreground_in(const Background &bg, int x0, int y0, int x1, int y1)
+{
+    int n = 0;
+    for (int r = y0 / Background::kScale; r < y1 / Background::kScale; r++)
+        for (int c = x0 / Background::kScale; c < x1 / Background::kScale; c++)
+            n += bg.mask()[r * bg.width() + c] != 0;
+    return n;
+}
+
+} // namespace
+
+// A square moving over a still background is foreground; the background
+// is not.
+START_TEST(moving_square_is_foreground)
+{
+    Background bg;
+    Gray g;
+    for (int k = 0; k < 60; k++) {
+        g.fill(100);
+        g.square(10 + 2 * k, 40, 20, 200);
+        bg.apply(g.planes(), nullptr, 0);
+    }
+    const int x = 10 + 2 * 59;
+    const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+    ck_assert_int_ge(foreground_in(bg, x, 40, x + 20, 60), cells * 9 / 10);
+    ck_assert_int_eq(foreground_in(bg, 0, 0, W, 30), 0);
+}
+END_TEST
+
+// A square that stops: where the model is told a confirmed track stands,
+// it stays foreground; without that, it is absorbed.
+START_TEST(stopped_person_under_a_track_is_not_absorbed)
+{
+    for (int frozen = 0; frozen < 2; frozen++) {
+        Background bg;
+        Gray g;
+        for (int k = 0; k < 200; k++) {
+            int x = k < 30 ? 10 + 2 * k : 70; // walks, then stands at 70
+            g.fill(100);
+            g.square(x, 40, 20, 200);
+            Rect r{x / Background::kScale - 1, 40 / Background::kScale - 1,
+                   (x + 20) / Background::kScale + 1, 60 / Background::kScale + 1};
+            bg.apply(g.planes(), &r, frozen);
+        }
+        const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+        int fg = foreground_in(bg, 70, 40, 90, 60);
+        if (frozen)
+            ck_assert_msg(fg >= cells * 9 / 10, "frozen: %d of %d foreground", fg, cells);
+        else
+            ck_assert_msg(fg <= cells / 10, "not frozen: %d of %d still foreground", fg, cells);
+    }
+}
+END_TEST
+
+// A slow lighting ramp (a level every 4 frames) is absorbed: no foreground.
+START_TEST(slow_lighting_ramp_is_absorbed)
+{
+    Background bg;
+    Gray g;
+    int most = 0;
+    for (int k = 0; k < 240; k++) {
+        g.fill(60 + k / 4);
+        bg.apply(g.planes(), nullptr, 0);
+        if (k > 20)
+            most = std::max(most, foreground_in(bg, 0, 0, W, H));
+    }
+    ck_assert_int_eq(most, 0);
+}
+END_TEST
+
+// People present in the first frame leave no lasting ghost when they walk
+// away.
+START_TEST(no_lasting_ghost_from_the_first_frame)
+{
+    Background bg;
+    Gray g;
+    for (int k = 0; k < 40; k++) {
+        g.fill(100);
+        g.square(10 + 3 * k, 40, 20, 200); // there in frame 1
+        bg.apply(g.planes(), nullptr, 0);
+    }
+    ck_assert_int_eq(foreground_in(bg, 10, 40, 30, 60), 0); // where it stood
+}
+END_TEST
+
+// Blobs: two fragments of one person stacked one above the other are
+// merged; two people side by side in one blob are split.
+START_TEST(fragments_merge_and_groups_split)
+{
+    std::vector<uint8_t> m(W * H, 0);
+    auto rect = [&](int x0, int y0, int x1, int y1) {
+        for (int r = y0; r < y1; r++)
+            for (int c = x0; c < x1; c++)
+                m[r * W + c] = 255;
+    };
+    rect(20, 10, 30, 30);  // torso
+    rect(20, 33, 30, 55);  // legs, a small gap below
+    rect(80, 20, 120, 60); // two people of 40 rows side by side
+    BlobFinder bf;
+    std::vector<Rect> out;
+    bf.find(m.data(), W, H, nullptr, 0, out);
+    ck_assert_int_eq((int)out.size(), 3);
+    int merged = 0, parts = 0;
+    for (const Rect &r : out) {
+        if (r.x0 < 50) {
+            merged++;
+            ck_assert_int_le(r.y0, 10);
+            ck_assert_int_ge(r.y1, 55);
+        } else {
+            parts++;
+            ck_assert_int_le(r.x1 - r.x0, 28); // about half of 40
+        }
+    }
+    ck_assert_int_eq(merged, 1);
+    ck_assert_int_eq(parts, 2);
+}
+END_TEST
+
+namespace {
+
+Profile profile_of_shape(bool (*inside)(double u, double v))
+{
+    // Render the shape into a 48 x 128 mask (a person's aspect) and take its
+    // profile.
+    const int w = 48, h = 128;
+    std::vector<uint8_t> m(w * h, 0);
+    for (int r = 0; r < h; r++)
+        for (int c = 0; c < w; c++)
+            m[r * w + c] = inside((c + 0.5) / w, (r + 0.5) / h) ? 255 : 0;
+    Profile p;
+    profile_of(m.data(), w, 0, 0, w, h, &p);
+    return p;
+}
+
+bool rectangle(double, double) { return true; }
+
+} // namespace
+
+// A silhouette of the library, as a profile, is recognised: every region
+// votes yes, at distance 0.
+START_TEST(library_silhouettes_are_pedestrians)
+{
+    // The silhouettes themselves are not visible here; their profiles come
+    // back through a rendered mask of a generated person: head, torso,
+    // legs.
+    Profile p = profile_of_shape([](double u, double v) {
+        if (v < 0.13)
+            return (u - 0.5) * (u - 0.5) / 0.01 + (v - 0.065) * (v - 0.065) / 0.0042 <= 1;
+        if (v < 0.16)
+            return std::fabs(u - 0.5) < 0.08;
+        if (v < 0.53)
+            return std::fabs(u - 0.5) < 0.5 - 0.1 * (v - 0.16) / 0.37;
+        return std::fabs(u - 0.5) < 0.4 * (1 - (v - 0.53) * 0.3);
+    });
+    Vote v = classify(p, default_thresholds());
+    ck_assert_int_ge(v.voters, kMinVoters);
+    ck_assert_msg(v.score > 0.5f, "a person-shaped mask scored %.2f", (double)v.score);
+}
+END_TEST
+
+// Regions with too few rows of foreground abstain: legs hidden behind
+// something leave the upper regions to vote.
+START_TEST(occluded_regions_abstain)
+{
+    Profile p = profile_of_shape(rectangle);
+    for (int r = 36; r < kRows; r++)
+        p.edge[r][0] = p.edge[r][1] = Profile::kEmpty;
+    Vote v = classify(p, default_thresholds());
+    ck_assert_float_eq(v.distance[kLowerLimbs], -1.0f);
+    ck_assert_int_eq(v.voters, kRegions - 1);
+    ck_assert_str_eq(region_name(kLowerLimbs), "lower limbs");
+    ck_assert_ptr_null(region_name(kRegions));
+}
+END_TEST
+
+int main()
+{
+    Suite *s = suite_create("background");
+    TCase *tc = tcase_create("background");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, moving_square_is_foreground);
+    tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
+    tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
+    tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
+    tcase_add_test(tc, fragments_merge_and_groups_split);
+    tcase_add_test(tc, library_silhouettes_are_pedestrians);
+    tcase_add_test(tc, occluded_regions_abstain);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
