@@ -206,12 +206,14 @@ static int cmp_double(const void *a, const void *b)
 /* Runs the sequence `passes` times through one tracker (timestamps going on),
  * with the real frames of `v` (then only as many frames as it has) or
  * without pixels (v NULL, an image of w x h). */
-static result run(const sequence *s, int passes, double fps, int w, int h, const video *v)
+static result run(const sequence *s, int passes, double fps, int w, int h, const video *v,
+                  int source)
 {
     result r;
     memset(&r, 0, sizeof r);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
+    cfg.source = source;
     long long before = live_bytes;
     ct_tracker *t = NULL;
     if (ct_tracker_create(&cfg, &t) != CT_OK) {
@@ -247,7 +249,8 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
                 f.planes[2] = p + luma + chroma;
             }
             size_t count;
-            if (ct_tracker_feed(t, &f, s->dets + s->start[k], s->count[k]) != CT_OK ||
+            const int own = source == CT_SOURCE_PIXELS; /* the tracker finds its candidates */
+            if (ct_tracker_feed(t, &f, own ? NULL : s->dets + s->start[k], own ? 0 : s->count[k]) != CT_OK ||
                 ct_tracker_get_tracks(t, out, 4096, sizeof *out, &count) != CT_OK) {
                 fprintf(stderr, "ct-bench: %s\n", ct_tracker_last_error(t));
                 exit(1);
@@ -350,20 +353,22 @@ int main(int argc, char **argv)
     printf("PETS09-S2L1 public detections (795 frames, 7 fps):\n");
     sequence pets = from_detfile(&df, 1, 1);
     sequence pets_hd = from_detfile(&df, 1920.0 / 768, 1080.0 / 576);
-    result r = run(&pets, passes, 7, 768, 576, NULL);
+    result r = run(&pets, passes, 7, 768, 576, NULL, CT_SOURCE_DETECTIONS);
     print_result(json, "detections 768x576", &r, 0, 1);
-    r = run(&pets_hd, passes, 7, 1920, 1080, NULL);
+    r = run(&pets_hd, passes, 7, 1920, 1080, NULL, CT_SOURCE_DETECTIONS);
     print_result(json, "detections 1920x1080", &r, 0, 0);
     /* With the real frames: the first 200 (768x576) and 60 (1920x1080). */
     if (video_path) {
         video v = load_video(video_path, 200);
-        r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &v);
+        r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &v, CT_SOURCE_DETECTIONS);
         print_result(json, "detections+pixels 768x576", &r, 0, 0);
+        r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &v, CT_SOURCE_PIXELS);
+        print_result(json, "pixels only 768x576", &r, 0, 0);
         free(v.data);
     }
     if (video_hd_path) {
         video v = load_video(video_hd_path, 60);
-        r = run(&pets_hd, passes > 5 ? 5 : passes, 7, v.width, v.height, &v);
+        r = run(&pets_hd, passes > 5 ? 5 : passes, 7, v.width, v.height, &v, CT_SOURCE_DETECTIONS);
         print_result(json, "detections+pixels 1920x1080", &r, 0, 0);
         free(v.data);
     }
@@ -374,7 +379,7 @@ int main(int argc, char **argv)
         sequence syn = synthetic(crowd[i], 300, 1920, 1080);
         char name[64];
         snprintf(name, sizeof name, "people %d", crowd[i]);
-        r = run(&syn, passes > 5 ? 5 : passes, 25, 1920, 1080, NULL);
+        r = run(&syn, passes > 5 ? 5 : passes, 25, 1920, 1080, NULL, CT_SOURCE_DETECTIONS);
         print_result(json, name, &r, crowd[i], 0);
         free_sequence(&syn);
     }

@@ -65,9 +65,10 @@ def write_rows(path, rows):
             f.write("%d,%d,%.2f,%.2f,%.2f,%.2f,1,-1,-1,-1\n" % (k, tid, x, y, w, h))
 
 
-def run_ctrack(build, seq, info, y4m, out, pixels, params=()):
-    cmd = [os.path.join(build, "tools", "ct-track"), "-q",
-           "-d", os.path.join(DATA, seq, "det", "det.txt"), "-o", out]
+def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True):
+    cmd = [os.path.join(build, "tools", "ct-track"), "-q", "-o", out]
+    if detections:
+        cmd += ["-d", os.path.join(DATA, seq, "det", "det.txt")]
     for p in params:
         cmd += ["-p", p]
     if pixels:
@@ -112,6 +113,7 @@ TRACKERS = [
     ("ctrack-detpix", "ctrack", "detections + pixels"),
     ("ctrack-detpix-noms", "ctrack, mean shift off (ablation)", "detections + pixels"),
     ("ctrack-detpix-noapp", "ctrack, DDIS off (ablation)", "detections + pixels"),
+    ("ctrack-pix", "ctrack", "pixels"),
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections"),
     ("norfair", "norfair 2.3.0 (IoU)", "detections"),
     ("mog2-iou", "OpenCV MOG2 + blobs + IoU tracker", "pixels"),
@@ -143,6 +145,8 @@ def main():
             elif key == "ctrack-detpix-noms":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
                                      params=["mean_shift=0"])
+            elif key == "ctrack-pix":
+                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True, detections=False)
             elif key == "ctrack-detpix-noapp":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
                                      params=["appearance=0"])
@@ -236,7 +240,9 @@ NOTES = """## Notes
   score 0.5). "detections + pixels": the same with the frames (ct-track reading
   the Y4M): each confirmed track keeps a colour model, multiscale mean shift refines
   its predicted box before association and follows it through missing detections
-  (docs/meanshift.md). Tracking from the pixels alone is not available yet.
+  (docs/meanshift.md). "pixels": no detections at all; ctrack finds people with
+  its background model and contour template (docs/pixels.md), like the MOG2
+  baseline.
 - **Ablations.** "mean shift off" is the same run with `mean_shift=0` and every
   other parameter equal, the lost-track lifetime and the reporting of lost tracks
   included: what mean shift adds comes from following the pixels, not from
