@@ -18,6 +18,9 @@ constexpr int kWarmup = 12, kWarmupStep = 8;
 // A pixel darker than the background by a ratio in [kShadowLow, kShadowHigh]
 // (of 256) with chroma within kShadowChroma levels is a shadow.
 constexpr int kShadowLow = 128, kShadowHigh = 240, kShadowChroma = 8;
+// A pixel whose chroma differs from the background's by more than this is
+// foreground whatever its brightness (a red shirt on grey stone).
+constexpr int kChromaForeground = 24;
 
 inline int step_toward(int m, int target, int step)
 {
@@ -98,9 +101,12 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
                 const size_t i = row + x;
                 const int U = iu[(size_t)x * cstep], W = iv[(size_t)x * cstep];
                 int mu = mu_[i], mv = mv_[i];
+                const int dc = std::max(std::abs(U - mu), std::abs(W - mv));
                 if (fg && I < M && I * 256 >= kShadowLow * M && I * 256 <= kShadowHigh * M &&
-                    std::abs(U - mu) <= kShadowChroma && std::abs(W - mv) <= kShadowChroma)
+                    dc <= kShadowChroma)
                     fg = false; // a shadow: darker, same colour
+                else if (!fg && dc > kChromaForeground)
+                    fg = true;  // same brightness, another colour
                 if (learn) {
                     mu_[i] = (uint8_t)step_toward(mu, U, step);
                     mv_[i] = (uint8_t)step_toward(mv, W, step);

@@ -312,6 +312,56 @@ START_TEST(threads_with_pixels)
 }
 END_TEST
 
+/* From the pixels alone: a person walking over the background is found,
+ * becomes a track, and is reported with a foreground barycenter; the host
+ * may not add detections; the candidates can be read. */
+START_TEST(pixels_alone)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    size_t n = 0, nc = 0;
+    ct_candidate cand[32];
+    for (int k = 0; k < 30; k++) {
+        draw(&im, 40 + 6.0 * k, 120);
+        n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+    }
+    ck_assert_uint_ge(nc, 1);
+    ck_assert_float_eq_tol((cand[0].left + cand[0].width / 2), (40 + 6.0 * 29), 12);
+    ck_assert(cand[0].voters >= 5 && cand[0].voters <= CT_REGIONS);
+    bool found = false; /* the person (a brief ghost of frame 1 may be there too) */
+    for (size_t i = 0; i < n; i++)
+        found |= fabs(out[i].barycenter_x - (40 + 6.0 * 29)) <= 12 &&
+                 fabs(out[i].barycenter_y - 120) <= 12;
+    ck_assert_msg(found, "no track on the person among %zu", n);
+    /* Detections from the host are refused in this mode. */
+    ct_detection d = test_det(10, 10, 20, 40, 0.9f);
+    ct_frame f = frame_of(&im, CT_FORMAT_I420, 31 * SEC / 10);
+    ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "CT_SOURCE_PIXELS"));
+    /* The candidates' bad arguments. */
+    ck_assert_int_eq(ct_tracker_get_candidates(NULL, cand, 32, sizeof cand[0], &nc),
+                     CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], NULL),
+                     CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, 4, &nc), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_candidates(t, NULL, 0, sizeof cand[0], &nc),
+                     CT_ERROR_BUFFER_TOO_SMALL);
+    ck_assert_uint_ge(nc, 1);
+    ct_tracker_destroy(t);
+
+    /* With detections as the source there are no candidates. */
+    t = test_tracker(NULL);
+    n = step_pixels(t, &im, CT_FORMAT_I420, 0, &d, 1, out);
+    ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+    ck_assert_uint_eq(nc, 0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 /* Pixels that come and go (some frames without) change nothing bad. */
 START_TEST(frames_with_and_without_pixels)
 {
@@ -345,6 +395,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, frames_with_and_without_pixels);
     tcase_add_test(tc, reidentifies_by_appearance);
     tcase_add_test(tc, threads_with_pixels);
+    tcase_add_test(tc, pixels_alone);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -23,12 +23,14 @@ from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
                    SOURCE_DETECTIONS, SOURCE_PIXELS)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "TRACK_DTYPE", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
 _lib = None
 
 #: The numpy dtype of a track: the fields of ct_track.
 TRACK_DTYPE = np.dtype(_abi.Track)
+#: The numpy dtype of a candidate (pixels only): the fields of ct_candidate.
+CANDIDATE_DTYPE = np.dtype(_abi.Candidate)
 _DET_DTYPE = np.dtype(_abi.Detection)
 _CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
 
@@ -236,6 +238,21 @@ class Tracker:
                                                  ctypes.byref(count))
         self._check(st)
         return np.frombuffer(self._out, dtype=TRACK_DTYPE, count=count.value).copy()
+
+    def candidates(self):
+        """From the pixels alone (source=SOURCE_PIXELS): the blobs of the
+        last step, a numpy structured array (CANDIDATE_DTYPE: the box, the
+        contour template's score and votes, region_distance per region)."""
+        t = self._handle()
+        count = ctypes.c_size_t()
+        size = ctypes.sizeof(_abi.Candidate)
+        st = self._lib.ct_tracker_get_candidates(t, None, 0, size, ctypes.byref(count))
+        if st not in (_abi.OK, _abi.ERROR_BUFFER_TOO_SMALL):
+            self._check(st)
+        buf = (_abi.Candidate * max(1, count.value))()
+        self._check(self._lib.ct_tracker_get_candidates(t, buf, len(buf), size,
+                                                         ctypes.byref(count)))
+        return np.frombuffer(buf, dtype=CANDIDATE_DTYPE, count=count.value).copy()
 
     def stats(self):
         """The library's counters: steps, feed time and time per stage (in

@@ -177,3 +177,25 @@ def test_stats():
     assert s["memory_bytes"] > 0
     assert set(s["stages"]) >= {"validate", "predict", "associate", "lifecycle", "report"}
     assert 0 < sum(s["stages"].values()) <= s["feed_seconds"]
+
+
+def test_pixels_alone_on_real_frames():
+    """TUD-Campus's first frames from the pixels alone: blobs are found and
+    scored; the host may not add detections."""
+    import subprocess as sp
+    raw = sp.run(["ffmpeg", "-v", "error", "-i", os.path.join(DATA, "TUD-Campus", "video.mp4"),
+                  "-frames:v", "30", "-f", "rawvideo", "-pix_fmt", "yuv420p", "-"],
+                 check=True, capture_output=True).stdout
+    frames = np.frombuffer(raw, np.uint8).reshape(-1, 480 * 3 // 2, 640)
+    seen = 0
+    with ctrack.Tracker(fps=25, source=ctrack.SOURCE_PIXELS) as t:
+        for f in frames:
+            t.feed(f, format="i420")
+            c = t.candidates()
+            seen += len(c)
+            assert set(c.dtype.names) >= {"left", "score", "votes_yes", "voters",
+                                          "region_distance"}
+            assert np.all((c["score"] >= 0) & (c["score"] <= 1))
+        with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
+            t.feed(frames[0], [[10, 10, 20, 40, 0.9]], format="i420")
+    assert seen > 20
