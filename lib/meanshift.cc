@@ -303,38 +303,30 @@ bool MeanShift::centroid(uint64_t total, const ColorModel &m, double *nx, double
 MeanShiftResult MeanShift::track(const Planes &img, double cx, double cy, double w, double h,
                                  const ColorModel &m, const MeanShiftParams &p)
 {
-    MeanShiftResult res;
-    res.cx = cx;
-    res.cy = cy;
-    res.width = w;
-    res.height = h;
     if (!m.valid || m.color != img.color)
-        return res;
+        return MeanShiftResult(cx, cy, w, h);
     // Coarse to fine: where the prediction missed by more than the window
     // reaches (fast motion), a first search with a window p.coarse_scale
     // times larger, and so sampled more sparsely, finds the person; the
     // window at its own size then refines it.
-    if (p.coarse_scale > 1 && similarity(img, cx, cy, w, h, m) < p.coarse_below) {
-        MeanShiftParams coarse = p;
-        coarse.coarse_scale = 1;
-        MeanShiftResult r = converge(img, cx, cy, w * p.coarse_scale, h * p.coarse_scale, m,
-                                     coarse);
+    int coarse_iterations = 0;
+    if (p.coarse_below > 0 && p.coarse_scale > 1 &&
+        similarity(img, cx, cy, w, h, m) < p.coarse_below) {
+        MeanShiftResult r =
+            converge(img, cx, cy, w * p.coarse_scale, h * p.coarse_scale, m, p);
         cx = r.cx;
         cy = r.cy;
+        coarse_iterations = r.iterations;
     }
     MeanShiftResult r = converge(img, cx, cy, w, h, m, p);
-    r.iterations += res.iterations;
+    r.iterations += coarse_iterations;
     return r;
 }
 
 MeanShiftResult MeanShift::converge(const Planes &img, double cx, double cy, double w, double h,
                                     const ColorModel &m, const MeanShiftParams &p)
 {
-    MeanShiftResult res;
-    res.cx = cx;
-    res.cy = cy;
-    res.width = w;
-    res.height = h;
+    MeanShiftResult res(cx, cy, w, h);
     const double hw = w / 2, hh = h / 2;
     uint64_t total = sample(img, cx, cy, hw, hh);
     int rho0 = rho(total, m.qw);

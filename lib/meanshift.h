@@ -47,6 +47,8 @@ struct MeanShiftParams {
 };
 
 struct MeanShiftResult {
+    MeanShiftResult() = default;
+    MeanShiftResult(double x, double y, double w, double h) : cx(x), cy(y), width(w), height(h) {}
     double cx = 0, cy = 0, width = 0, height = 0;
     int rho = 0;          // Bhattacharyya coefficient at the result, Q16
     int iterations = 0;
@@ -94,7 +96,8 @@ public:
     // is far off; the size stays.
     MeanShiftResult track(const Planes &img, double cx, double cy, double w, double h,
                           const ColorModel &m, const MeanShiftParams &p);
-    // (track without the coarse search)
+    // Steps 7 and 8 from (cx, cy) at this window size (track() without its
+    // coarse search).
     MeanShiftResult converge(const Planes &img, double cx, double cy, double w, double h,
                              const ColorModel &m, const MeanShiftParams &p);
     // Multiscale: replaces r's size by the best of {1 - d, 1, 1 + d} times it

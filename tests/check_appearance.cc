@@ -11,31 +11,14 @@
 #include <vector>
 
 #include "appearance.h"
-#include "input.h"
+#include "common.h"
+#include "test_image.h"
 
 using namespace ctrack;
 
 static std::string data_dir;
 
 namespace {
-
-struct Image {
-    int w = 0, h = 0;
-    std::vector<uint8_t> buf;
-    Planes planes() const
-    {
-        Planes p;
-        p.width = w;
-        p.height = h;
-        p.y = buf.data();
-        p.u = buf.data() + (size_t)w * h;
-        p.v = p.u + (size_t)((w + 1) / 2) * ((h + 1) / 2);
-        p.y_stride = w;
-        p.u_stride = p.v_stride = (w + 1) / 2;
-        p.color = true;
-        return p;
-    }
-};
 
 // One crossing: two people a, b, apart before and after; boxes[0..3] are
 // a before, b before, a after, b after.
@@ -66,21 +49,7 @@ std::vector<Crossing> load_crossings()
                         b + 9, b + 10, b + 11, b + 12, b + 13, b + 14, b + 15) != 18)
             continue;
         c.name = name;
-        ct_input_params ip = {0, 0, CT_FORMAT_I420};
-        ct_input *in = nullptr;
-        ct_input_info info;
-        char err[256];
-        ck_assert_msg(ct_input_open((dir + c.name + ".y4m").c_str(), &ip, &in, &info, err,
-                                    sizeof err) == 0, "%s", err);
-        for (int k = 0; k < 2; k++) {
-            ct_frame fr;
-            ck_assert_int_eq(ct_input_read(in, &fr, err, sizeof err), 1);
-            c.frames[k].w = fr.width;
-            c.frames[k].h = fr.height;
-            c.frames[k].buf.assign(fr.planes[0],
-                                   fr.planes[0] + ct_frame_bytes(CT_FORMAT_I420, fr.width, fr.height));
-        }
-        ct_input_close(in);
+        read_clip(dir + c.name + ".y4m", c.frames, 2);
         for (int i = 0; i < 4; i++) {
             c.desc[i].resize((size_t)kPoints * kDescDim);
             const double *x = c.boxes[i];
@@ -291,9 +260,5 @@ int main(int argc, char **argv)
     tcase_add_test(tc, ranks_the_right_person_after_a_crossing);
     tcase_add_test(tc, against_dis);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    return run_suite(s);
 }

@@ -2,6 +2,8 @@
 // problems (internal API).
 #include <check.h>
 
+#include "common.h"
+
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -136,9 +138,5 @@ int main()
     tcase_add_test(tc, block_diagonal);
     tcase_add_test(tc, nothing_allowed);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    return run_suite(s);
 }

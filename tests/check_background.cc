@@ -2,6 +2,8 @@
 // synthetic sequences and generated silhouettes.
 #include <check.h>
 
+#include "common.h"
+
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -230,9 +232,5 @@ int main()
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, occluded_regions_abstain);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    return run_suite(s);
 }

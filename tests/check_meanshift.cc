@@ -16,7 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "input.h"
+#include "common.h"
+#include "test_image.h"
 #include "meanshift.h"
 
 using namespace ctrack;
@@ -24,32 +25,6 @@ using namespace ctrack;
 static std::string data_dir;
 
 namespace {
-
-// One I420 image in memory.
-struct Image {
-    int w = 0, h = 0;
-    std::vector<uint8_t> buf;
-    Planes planes() const
-    {
-        Planes p;
-        p.width = w;
-        p.height = h;
-        p.y = buf.data();
-        p.u = buf.data() + (size_t)w * h;
-        p.v = p.u + (size_t)((w + 1) / 2) * ((h + 1) / 2);
-        p.y_stride = w;
-        p.u_stride = p.v_stride = (w + 1) / 2;
-        p.color = true;
-        return p;
-    }
-    uint8_t &Y(int x, int y) { return buf[(size_t)y * w + x]; }
-    uint8_t &U(int x, int y) { return buf[(size_t)w * h + (size_t)(y / 2) * ((w + 1) / 2) + x / 2]; }
-    uint8_t &V(int x, int y)
-    {
-        size_t c = (size_t)((w + 1) / 2) * ((h + 1) / 2);
-        return buf[(size_t)w * h + c + (size_t)(y / 2) * ((w + 1) / 2) + x / 2];
-    }
-};
 
 struct Clip {
     std::string name;
@@ -75,22 +50,7 @@ std::vector<Clip> load_clips()
                         &b0[1], &b0[2], &b0[3], &b1[0], &b1[1], &b1[2], &b1[3]) != 10)
             continue;
         c.name = name;
-        ct_input_params ip = {0, 0, CT_FORMAT_I420};
-        ct_input *in = nullptr;
-        ct_input_info info;
-        char err[256];
-        ck_assert_msg(ct_input_open((dir + c.name + ".y4m").c_str(), &ip, &in, &info, err,
-                                    sizeof err) == 0, "%s", err);
-        for (int k = 0; k < 2; k++) {
-            ct_frame fr;
-            ck_assert_int_eq(ct_input_read(in, &fr, err, sizeof err), 1);
-            Image &im = c.frames[k];
-            im.w = fr.width;
-            im.h = fr.height;
-            size_t n = ct_frame_bytes(CT_FORMAT_I420, fr.width, fr.height);
-            im.buf.assign(fr.planes[0], fr.planes[0] + n);
-        }
-        ct_input_close(in);
+        read_clip(dir + c.name + ".y4m", c.frames, 2);
         clips.push_back(std::move(c));
     }
     std::fclose(f);
@@ -463,9 +423,5 @@ int main(int argc, char **argv)
     tcase_add_test(tc, step_agrees_with_opencv);
     tcase_add_test(tc, grey_frames);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    return run_suite(s);
 }

@@ -3,6 +3,8 @@
 // fail on demand; the library is linked statically so it uses this one.
 #include <check.h>
 
+#include "common.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -158,9 +160,5 @@ int main(int argc, char **argv)
     tcase_add_test(tc, feed_out_of_memory_changes_nothing);
     tcase_add_test(tc, steady_state_does_not_allocate);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? 0 : 1;
+    return run_suite(s);
 }
