@@ -20,8 +20,9 @@ constexpr double kMinSide = 1.0;
 // detection's.
 constexpr double kFollowNoiseRatio = 2.0;
 constexpr double kFollowSizeNoiseRatio = 4.0;
-// A track is occluded when another covers this much of its box: its colour
-// model is then left as it is.
+// A track is occluded when another covers this much of its box: it is then
+// not followed by mean shift, and its colour model and appearance template
+// are left as they are.
 constexpr double kOccludedFraction = 0.2;
 // Mean shift follows a track only while this much of its box is in the image.
 constexpr double kMinInside = 0.9;
@@ -565,8 +566,11 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
                 keep = since <= cfg_.lost_lifetime && !outside;
             }
         }
-        if (keep)
-            tracks_[k++] = t;
+        if (keep) {
+            if (k != i) // a track is some 2 KiB (its colour model): move only the ones that move
+                tracks_[k] = t;
+            k++;
+        }
     }
     tracks_.resize(k);
 
