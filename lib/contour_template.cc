@@ -1,5 +1,6 @@
 #include "contour_template.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ctrack {
@@ -68,33 +69,93 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     }
 }
 
-Vote classify(const Profile &p, const RegionThresholds &th)
+void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o)
 {
+    const int kFar = 60000;
+    for (int r = 0; r < kGrid; r++)
+        for (int c = 0; c < kGrid; c++)
+            o->dist[r][c] = kFar;
+    const int w = x1 - x0, h = y1 - y0;
+    if (w <= 0 || h <= 0)
+        return;
+    const double centre = (x0 + x1) / 2.0;
+    auto fg = [&](int x, int y) {
+        return x >= x0 && x < x1 && y >= y0 && y < y1 && mask[(size_t)y * stride + x] != 0;
+    };
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            if (!fg(x, y) || (fg(x - 1, y) && fg(x + 1, y) && fg(x, y - 1) && fg(x, y + 1)))
+                continue;
+            int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
+            int r = (int)((y + 0.5 - y0) / h * kGrid);
+            if (c >= 0 && c < kGrid && r >= 0 && r < kGrid)
+                o->dist[r][c] = 0;
+        }
+    // Two passes of the 3-4 chamfer distance.
+    for (int r = 0; r < kGrid; r++)
+        for (int c = 0; c < kGrid; c++) {
+            int d = o->dist[r][c];
+            if (c > 0) d = std::min(d, o->dist[r][c - 1] + 3);
+            if (r > 0) {
+                d = std::min(d, o->dist[r - 1][c] + 3);
+                if (c > 0) d = std::min(d, o->dist[r - 1][c - 1] + 4);
+                if (c + 1 < kGrid) d = std::min(d, o->dist[r - 1][c + 1] + 4);
+            }
+            o->dist[r][c] = (uint16_t)d;
+        }
+    for (int r = kGrid - 1; r >= 0; r--)
+        for (int c = kGrid - 1; c >= 0; c--) {
+            int d = o->dist[r][c];
+            if (c + 1 < kGrid) d = std::min(d, o->dist[r][c + 1] + 3);
+            if (r + 1 < kGrid) {
+                d = std::min(d, o->dist[r + 1][c] + 3);
+                if (c + 1 < kGrid) d = std::min(d, o->dist[r + 1][c + 1] + 4);
+                if (c > 0) d = std::min(d, o->dist[r + 1][c - 1] + 4);
+            }
+            o->dist[r][c] = (uint16_t)d;
+        }
+}
+
+Vote classify(const Shape &shape, const RegionThresholds &th)
+{
+    const Profile &p = shape.profile;
+    // Which regions vote depends on the blob alone.
+    bool votes[kRegions];
+    for (int g = 0; g < kRegions; g++) {
+        const Zone &z = kZones[g];
+        int present = 0;
+        for (int r = z.row0; r < z.row1; r++)
+            present += !p.empty(r);
+        votes[g] = 2 * present >= z.row1 - z.row0;
+    }
     Vote best;
     float best_total = INFINITY;
     for (int s = 0; s < kSilhouettes; s++) {
+        float sum[kRegions] = {0};
+        int n[kRegions] = {0};
+        for (int k = 0; k < kOutlinePoints; k++) {
+            const float x = kOutline[s][k][0], y = kOutline[s][k][1];
+            const int col = std::min(kGrid - 1, std::max(0, (int)((x + 0.5f) * kGrid)));
+            const int row = std::min(kGrid - 1, std::max(0, (int)(y * kGrid)));
+            const float d = shape.outline.dist[row][col] / (3.0f * kGrid); // box heights
+            const int side = x < 0 ? 0 : 1;
+            for (int g = 0; g < kRegions; g++) {
+                const Zone &z = kZones[g];
+                if (row >= z.row0 * kGrid / kRows && row < z.row1 * kGrid / kRows &&
+                    (z.side == 2 || z.side == side)) {
+                    sum[g] += d;
+                    n[g]++;
+                }
+            }
+        }
         Vote v;
         float total = 0;
         for (int g = 0; g < kRegions; g++) {
-            const Zone &z = kZones[g];
-            float sum = 0;
-            int n = 0, rows = 0;
-            for (int r = z.row0; r < z.row1; r++) {
-                rows++;
-                if (p.empty(r))
-                    continue;
-                for (int side = 0; side < 2; side++)
-                    if (z.side == 2 || z.side == side) {
-                        sum += std::fabs(p.edge[r][side] - kSilhouette[s][r][side]);
-                        n++;
-                    }
-            }
-            const int present = z.side == 2 ? n / 2 : n;
-            if (2 * present < rows) { // occluded or out of the frame: abstain
+            if (!votes[g] || n[g] == 0) {
                 v.distance[g] = -1;
                 continue;
             }
-            v.distance[g] = sum / n;
+            v.distance[g] = sum[g] / n[g];
             v.voters++;
             v.yes += v.distance[g] <= th.t[g];
             total += v.distance[g];

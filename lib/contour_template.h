@@ -30,10 +30,28 @@ struct Profile {
 // [x0, x1) x [y0, y1).
 void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Profile *p);
 
+// A blob's outline as a distance map on a kGrid x kGrid canvas of the
+// canonical box (x from -0.5 to 0.5 box heights around its centre, y from 0
+// to 1 box height): each cell holds its distance to the nearest outline
+// pixel (3-4 chamfer units, a cell is 3).
+constexpr int kGrid = 64;
+struct Outline {
+    uint16_t dist[kGrid][kGrid];
+};
+void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o);
+
+// The blob: its profile says which regions can vote (abstention); its
+// outline gives eq. (1)'s distances.
+struct Shape {
+    Profile profile;
+    Outline outline;
+};
+
 struct Vote {
-    // Eq. (1) per region: the mean distance between the candidate's profile
-    // points and the best template's, in box heights; negative where the
-    // region abstained (too few of its rows hold foreground).
+    // Eq. (1) per region: the mean distance from the best silhouette's
+    // outline points in the region to the blob's outline (nearest-point
+    // correspondence), in box heights; negative where the region abstained
+    // (too few of its rows hold foreground).
     float distance[kRegions];
     int yes = 0, voters = 0;
     float score = 0;  // yes / voters, 0 with fewer than kMinVoters voters
@@ -51,7 +69,7 @@ const RegionThresholds &default_thresholds();
 // distance over the regions that vote), so that the distances reported do
 // not depend on the thresholds. A tie of votes (yes = no) is a no: score
 // 0.5 is not above the majority.
-Vote classify(const Profile &p, const RegionThresholds &th);
+Vote classify(const Shape &s, const RegionThresholds &th);
 
 // At least this many regions must vote for a score.
 constexpr int kMinVoters = 5;

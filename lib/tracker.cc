@@ -407,9 +407,9 @@ void Engine::find_candidates(const Planes &img)
     candidates_.clear();
     const int s = Background::kScale;
     for (const Rect &r : blob_rects_) {
-        Profile p;
-        profile_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &p);
-        Vote v = classify(p, default_thresholds());
+        profile_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.profile);
+        outline_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.outline);
+        Vote v = classify(shape_, default_thresholds());
         ct_candidate c = {};
         c.left = (float)(r.x0 * s);
         c.top = (float)(r.y0 * s);

@@ -164,7 +164,7 @@ END_TEST
 
 namespace {
 
-Profile profile_of_shape(bool (*inside)(double u, double v))
+Shape shape_of(bool (*inside)(double u, double v))
 {
     // Render the shape into a 48 x 128 mask (a person's aspect) and take its
     // profile.
@@ -173,9 +173,10 @@ Profile profile_of_shape(bool (*inside)(double u, double v))
     for (int r = 0; r < h; r++)
         for (int c = 0; c < w; c++)
             m[r * w + c] = inside((c + 0.5) / w, (r + 0.5) / h) ? 255 : 0;
-    Profile p;
-    profile_of(m.data(), w, 0, 0, w, h, &p);
-    return p;
+    Shape s;
+    profile_of(m.data(), w, 0, 0, w, h, &s.profile);
+    outline_of(m.data(), w, 0, 0, w, h, &s.outline);
+    return s;
 }
 
 bool rectangle(double, double) { return true; }
@@ -189,7 +190,7 @@ START_TEST(library_silhouettes_are_pedestrians)
     // The silhouettes themselves are not visible here; their profiles come
     // back through a rendered mask of a generated person: head, torso,
     // legs.
-    Profile p = profile_of_shape([](double u, double v) {
+    Shape p = shape_of([](double u, double v) {
         if (v < 0.13)
             return (u - 0.5) * (u - 0.5) / 0.01 + (v - 0.065) * (v - 0.065) / 0.0042 <= 1;
         if (v < 0.16)
@@ -208,9 +209,9 @@ END_TEST
 // something leave the upper regions to vote.
 START_TEST(occluded_regions_abstain)
 {
-    Profile p = profile_of_shape(rectangle);
+    Shape p = shape_of(rectangle);
     for (int r = 36; r < kRows; r++)
-        p.edge[r][0] = p.edge[r][1] = Profile::kEmpty;
+        p.profile.edge[r][0] = p.profile.edge[r][1] = Profile::kEmpty;
     Vote v = classify(p, default_thresholds());
     ck_assert_float_eq(v.distance[kLowerLimbs], -1.0f);
     ck_assert_int_eq(v.voters, kRegions - 1);

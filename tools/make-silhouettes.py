@@ -79,19 +79,44 @@ def profile(body, xs, ys):
     return out, height / (right - left)
 
 
+POINTS = 160
+
+
+def contour_points(body, xs, ys):
+    """POINTS points of the silhouette's outline (body pixels with a
+    4-neighbour outside), spread evenly, from the box's centre in box heights
+    (x) and from its top in box heights (y)."""
+    inner = body.copy()
+    inner[1:, :] &= body[:-1, :]
+    inner[:-1, :] &= body[1:, :]
+    inner[:, 1:] &= body[:, :-1]
+    inner[:, :-1] &= body[:, 1:]
+    edge = body & ~inner
+    r, c = np.where(edge)
+    rows_any = np.where(body.any(axis=1))[0]
+    cols_any = np.where(body.any(axis=0))[0]
+    top, bottom = ys[rows_any[0]], ys[rows_any[-1]]
+    centre = (xs[cols_any[0]] + xs[cols_any[-1]]) / 2
+    height = bottom - top
+    pts = np.column_stack([(xs[c] - centre) / height, (ys[r] - top) / height])
+    pick = np.random.default_rng(0).choice(len(pts), POINTS, replace=False)
+    return pts[np.sort(pick)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     here = os.path.dirname(os.path.abspath(__file__))
     ap.add_argument("--out", default=os.path.join(here, "..", "lib", "silhouettes.inc"))
     ap.add_argument("--png", help="also draw the silhouettes into this PNG")
     a = ap.parse_args()
-    sils, names, aspects = [], [], []
+    sils, names, aspects, outlines = [], [], [], []
     for view in VIEWS:
         for swing in ARM_SWINGS:
             for phase in range(PHASES):
                 body, xs, ys = render(view, phase, swing)
                 p, aspect = profile(body, xs, ys)
                 sils.append(p)
+                outlines.append(contour_points(body, xs, ys))
                 aspects.append(aspect)
                 names.append("%s, arm swing %.2f, phase %d/%d" % (view, swing, phase, PHASES))
     with open(a.out, "w") as f:
@@ -105,6 +130,13 @@ def main():
             f.write("    // %s\n    {" % name)
             f.write(", ".join("{%.4ff, %.4ff}" % (l, r) for l, r in p))
             f.write("},\n")
+        f.write("};\n")
+        f.write("// The outline of each: %d points, x from the box's centre and y from its\n" % POINTS)
+        f.write("// top, in box heights.\n")
+        f.write("constexpr int kOutlinePoints = %d;\n" % POINTS)
+        f.write("constexpr float kOutline[kSilhouettes][kOutlinePoints][2] = {\n")
+        for o in outlines:
+            f.write("    {" + ", ".join("{%.4ff, %.4ff}" % (x, y) for x, y in o) + "},\n")
         f.write("};\n")
     print("wrote %d silhouettes to %s (height/width %.2f to %.2f)"
           % (len(sils), a.out, min(aspects), max(aspects)))
