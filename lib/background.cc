@@ -33,7 +33,8 @@ inline int step_toward(int m, int target, int step)
 size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
-           mask_.capacity() + frozen_.capacity();
+           mask_.capacity() + frozen_.capacity() + line_y_.capacity() + line_u_.capacity() +
+           line_v_.capacity();
 }
 
 void Background::start(const Planes &img)
@@ -76,42 +77,74 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
                       1);
     }
     const int step = frames_ < kWarmup ? kWarmupStep : 1;
-    const int cs = kScale / 2;            // working pixel to chroma sample
-    const int cstep = cs * img.c_step;
-    for (int y = 0; y < h_; y++) {
-        const uint8_t *iy = img.y + (size_t)(y * kScale) * img.y_stride;
-        const uint8_t *iu = color_ ? img.u + (size_t)(y * cs) * img.u_stride : nullptr;
-        const uint8_t *iv = color_ ? img.v + (size_t)(y * cs) * img.v_stride : nullptr;
-        const size_t row = (size_t)y * w_;
-        uint8_t *my = &my_[row], *vy = &vy_[row], *mask = &mask_[row];
-        const uint8_t *frozen = &frozen_[row];
-        for (int x = 0; x < w_; x++) {
-            const int I = iy[x * kScale];
+    const int cs = kScale / 2; // working pixel to chroma sample
+    // Locals and restrict pointers: stores through uint8_t pointers may
+    // alias anything, and would make the compiler reload every member after
+    // each one (the loop ran at about 100 instructions a pixel).
+    const bool color = color_;
+    const int w = w_, h = h_;
+    const size_t cstep = (size_t)cs * img.c_step;
+    // Each row's samples are gathered first into contiguous buffers, so that
+    // the loop below reads unit-stride arrays and the compiler vectorises it.
+    line_y_.resize(w);
+    line_u_.resize(w);
+    line_v_.resize(w);
+    for (int y = 0; y < h; y++) {
+        const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
+        uint8_t *__restrict iy = line_y_.data();
+        for (int x = 0; x < w; x++)
+            iy[x] = src[x * kScale];
+        const size_t row = (size_t)y * w;
+        uint8_t *__restrict my = my_.data() + row;
+        uint8_t *__restrict vy = vy_.data() + row;
+        uint8_t *__restrict mask = mask_.data() + row;
+        const uint8_t *__restrict frozen = frozen_.data() + row;
+        if (!color) {
+            for (int x = 0; x < w; x++) {
+                const int I = iy[x];
+                int M = my[x], V = vy[x];
+                if (!frozen[x]) {
+                    M = step_toward(M, I, step);
+                    const int D = std::abs(I - M);
+                    if (D != 0)
+                        V = std::min(kVMax, std::max(kVMin, V + (kN * D > V ? 1 : -1)));
+                }
+                my[x] = (uint8_t)M;
+                vy[x] = (uint8_t)V;
+                mask[x] = std::abs(I - M) > V ? 255 : 0;
+            }
+            continue;
+        }
+        const uint8_t *su = img.u + (size_t)(y * cs) * img.u_stride;
+        const uint8_t *sv = img.v + (size_t)(y * cs) * img.v_stride;
+        uint8_t *__restrict iu = line_u_.data(), *__restrict iv = line_v_.data();
+        for (int x = 0; x < w; x++) {
+            iu[x] = su[x * cstep];
+            iv[x] = sv[x * cstep];
+        }
+        uint8_t *__restrict mu = mu_.data() + row;
+        uint8_t *__restrict mv = mv_.data() + row;
+        for (int x = 0; x < w; x++) {
+            const int I = iy[x];
             int M = my[x], V = vy[x];
-            const bool learn = !frozen[x];
-            if (learn) {
+            const int U = iu[x], W = iv[x];
+            const int bu = mu[x], bv = mv[x];
+            if (!frozen[x]) {
                 M = step_toward(M, I, step);
                 const int D = std::abs(I - M);
                 if (D != 0)
                     V = std::min(kVMax, std::max(kVMin, V + (kN * D > V ? 1 : -1)));
+                mu[x] = (uint8_t)step_toward(bu, U, step);
+                mv[x] = (uint8_t)step_toward(bv, W, step);
             }
             const int D = std::abs(I - M);
+            const int dc = std::max(std::abs(U - bu), std::abs(W - bv));
             bool fg = D > V;
-            if (color_) {
-                const size_t i = row + x;
-                const int U = iu[(size_t)x * cstep], W = iv[(size_t)x * cstep];
-                int mu = mu_[i], mv = mv_[i];
-                const int dc = std::max(std::abs(U - mu), std::abs(W - mv));
-                if (fg && I < M && I * 256 >= kShadowLow * M && I * 256 <= kShadowHigh * M &&
-                    dc <= kShadowChroma)
-                    fg = false; // a shadow: darker, same colour
-                else if (!fg && dc > kChromaForeground)
-                    fg = true;  // same brightness, another colour
-                if (learn) {
-                    mu_[i] = (uint8_t)step_toward(mu, U, step);
-                    mv_[i] = (uint8_t)step_toward(mv, W, step);
-                }
-            }
+            if (fg && I < M && I * 256 >= kShadowLow * M && I * 256 <= kShadowHigh * M &&
+                dc <= kShadowChroma)
+                fg = false; // a shadow: darker, same colour
+            else if (!fg && dc > kChromaForeground)
+                fg = true;  // same brightness, another colour
             my[x] = (uint8_t)M;
             vy[x] = (uint8_t)V;
             mask[x] = fg ? 255 : 0;

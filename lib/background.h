@@ -43,6 +43,7 @@ private:
     // the image, V toward N times |I - M|).
     std::vector<uint8_t> my_, vy_, mu_, mv_;
     std::vector<uint8_t> mask_, frozen_;
+    std::vector<uint8_t> line_y_, line_u_, line_v_; // one row's samples
 };
 
 } // namespace ctrack

@@ -30,6 +30,45 @@ constexpr Zone kZones[kRegions] = {
     {36, 64, 2},  // lower limbs
 };
 
+// Each outline point's cell on the canvas and the regions holding it, made
+// at compile time from the silhouettes.
+struct PointInfo {
+    uint16_t cell;    // row * kGrid + col
+    uint16_t regions; // bit g: region g holds the point
+};
+
+constexpr int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+struct PointTable {
+    PointInfo p[kSilhouettes][kOutlinePoints];
+};
+
+constexpr PointTable make_points()
+{
+    PointTable t{};
+    for (int s = 0; s < kSilhouettes; s++)
+        for (int k = 0; k < kOutlinePoints; k++) {
+            const float x = kOutline[s][k][0], y = kOutline[s][k][1];
+            const int col = clampi((int)((x + 0.5f) * kGrid), 0, kGrid - 1);
+            const int row = clampi((int)(y * kGrid), 0, kGrid - 1);
+            const int side = x < 0 ? 0 : 1;
+            uint16_t regions = 0;
+            for (int g = 0; g < kRegions; g++) {
+                const Zone &z = kZones[g];
+                if (row >= z.row0 * kGrid / kRows && row < z.row1 * kGrid / kRows &&
+                    (z.side == 2 || z.side == side))
+                    regions |= (uint16_t)(1u << g);
+            }
+            t.p[s][k] = PointInfo{(uint16_t)(row * kGrid + col), regions};
+        }
+    return t;
+}
+
+constexpr PointTable kPoints = make_points();
+
 const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "back",
                                       "abdomen", "buttocks", "upper limbs", "lower limbs"};
 
@@ -133,19 +172,14 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
     for (int s = 0; s < kSilhouettes; s++) {
         float sum[kRegions] = {0};
         int n[kRegions] = {0};
+        const uint16_t *dist = &shape.outline.dist[0][0];
         for (int k = 0; k < kOutlinePoints; k++) {
-            const float x = kOutline[s][k][0], y = kOutline[s][k][1];
-            const int col = std::min(kGrid - 1, std::max(0, (int)((x + 0.5f) * kGrid)));
-            const int row = std::min(kGrid - 1, std::max(0, (int)(y * kGrid)));
-            const float d = shape.outline.dist[row][col] / (3.0f * kGrid); // box heights
-            const int side = x < 0 ? 0 : 1;
-            for (int g = 0; g < kRegions; g++) {
-                const Zone &z = kZones[g];
-                if (row >= z.row0 * kGrid / kRows && row < z.row1 * kGrid / kRows &&
-                    (z.side == 2 || z.side == side)) {
-                    sum[g] += d;
-                    n[g]++;
-                }
+            const PointInfo &pt = kPoints.p[s][k];
+            const float d = dist[pt.cell] * (1.0f / (3 * kGrid)); // box heights
+            for (unsigned bits = pt.regions; bits; bits &= bits - 1) {
+                const int g = __builtin_ctz(bits);
+                sum[g] += d;
+                n[g]++;
             }
         }
         Vote v;

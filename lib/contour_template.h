@@ -34,7 +34,7 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
 // canonical box (x from -0.5 to 0.5 box heights around its centre, y from 0
 // to 1 box height): each cell holds its distance to the nearest outline
 // pixel (3-4 chamfer units, a cell is 3).
-constexpr int kGrid = 64;
+constexpr int kGrid = 32;
 struct Outline {
     uint16_t dist[kGrid][kGrid];
 };
