@@ -1,6 +1,8 @@
 // The only file of the library that includes OpenCV.
 #include "blobs.h"
 
+#include "contour_template.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,6 +16,7 @@ constexpr int kMinArea = 100;         // working pixels (400 frame pixels)
 constexpr int kMinHeight = 10;        // working pixels
 constexpr double kMergeOverlap = 0.5; // of the narrower blob's width
 constexpr double kMergeGap = 0.25;    // of the taller blob's height
+constexpr double kFarMergeGap = 1.0;  // with the contour template's consent
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -36,6 +39,7 @@ struct BlobFinder::Impl {
     std::vector<std::vector<cv::Point>> contours;
     std::vector<Rect> blobs;
     std::vector<int> columns, centres;
+    Shape shape;
 };
 
 BlobFinder::BlobFinder() : impl_(new Impl) {}
@@ -50,6 +54,15 @@ size_t BlobFinder::memory_bytes() const
 {
     return impl_->clean.total() + impl_->tmp.total() + impl_->blobs.capacity() * sizeof(Rect) +
            impl_->columns.capacity() * sizeof(int);
+}
+
+float BlobFinder::vote(const Rect &r)
+{
+    Impl &m = *impl_;
+    const int w = m.clean.cols;
+    profile_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.profile);
+    outline_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.outline);
+    return classify(m.shape, default_thresholds()).score;
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
@@ -83,10 +96,14 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                 const Rect &p = b[i], &q = b[j];
                 const int gap = std::max(p.y0, q.y0) - std::min(p.y1, q.y1);
                 const int tall = std::max(p.y1 - p.y0, q.y1 - q.y0);
-                if (!overlaps_x(p, q, kMergeOverlap) || gap > kMergeGap * tall)
+                if (!overlaps_x(p, q, kMergeOverlap) || gap > kFarMergeGap * tall)
                     continue;
                 Rect u = unite(p, q);
                 if (u.y1 - u.y0 < kPersonAspect * 0.75 * (u.x1 - u.x0))
+                    continue;
+                // Close fragments merge; farther ones only when the union
+                // looks more like a person than either part does.
+                if (gap > kMergeGap * tall && !(vote(u) > std::max(vote(p), vote(q))))
                     continue;
                 b[i] = u;
                 b.erase(b.begin() + j);

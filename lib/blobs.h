@@ -31,6 +31,8 @@ public:
     size_t memory_bytes() const;
 
 private:
+    // The contour template's score of the cleaned mask inside r.
+    float vote(const Rect &r);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
