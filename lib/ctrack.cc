@@ -13,6 +13,7 @@
 #include "config.h"
 #include "error.h"
 #include "frame.h"
+#include "sized.h"
 #include "tracker.h"
 
 #define CT_STR2(x) #x
@@ -77,10 +78,8 @@ int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char 
         return ctrack::fail(msg, len, CT_ERROR_BUFFER_TOO_SMALL,
                             "capacity: %zu %ss, %zu needed", capacity, what, items.size());
     unsigned char *dst = static_cast<unsigned char *>(out);
-    for (size_t i = 0; i < items.size(); i++, dst += elem_size) {
-        std::memset(dst, 0, elem_size);
-        std::memcpy(dst, &items[i], sizeof(T));
-    }
+    for (size_t i = 0; i < items.size(); i++, dst += elem_size)
+        ctrack::write_sized(dst, elem_size, items[i]);
     return CT_OK;
 }
 
@@ -122,9 +121,7 @@ int ct_config_default(ct_config *cfg, size_t size)
 {
     if (!cfg || size < sizeof(size_t))
         return CT_ERROR_INVALID_ARGUMENT;
-    ct_config d = ctrack::default_config();
-    std::memset(static_cast<void *>(cfg), 0, size);
-    std::memcpy(static_cast<void *>(cfg), &d, size < sizeof d ? size : sizeof d);
+    ctrack::write_sized(cfg, size, ctrack::default_config());
     cfg->size = size;
     return CT_OK;
 }
@@ -138,9 +135,7 @@ int ct_frame_default(ct_frame *frame, size_t size)
 {
     if (!frame || size < sizeof(size_t))
         return CT_ERROR_INVALID_ARGUMENT;
-    ct_frame d = ctrack::default_frame();
-    std::memset(static_cast<void *>(frame), 0, size);
-    std::memcpy(static_cast<void *>(frame), &d, size < sizeof d ? size : sizeof d);
+    ctrack::write_sized(frame, size, ctrack::default_frame());
     frame->size = size;
     return CT_OK;
 }
@@ -271,8 +266,7 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     s.mean_shift_runs = e.mean_shift_runs();
     s.ddis_runs = e.ddis_runs();
     s.template_builds = e.template_builds();
-    std::memset(static_cast<void *>(stats), 0, size);
-    std::memcpy(static_cast<void *>(stats), &s, std::min(size, sizeof s));
+    ctrack::write_sized(stats, size, s);
     return CT_OK;
 }
 

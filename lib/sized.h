@@ -32,6 +32,16 @@ SizedResult read_sized(const T *in, size_t caller_size, size_t min_size, T *out)
     return SizedResult::ok;
 }
 
+// Writes value into the caller's struct of `size` bytes: what both know is
+// copied, a smaller caller's struct gets only its part, a larger one's
+// unknown tail is zeroed.
+template <typename T>
+void write_sized(void *out, size_t size, const T &value)
+{
+    std::memset(out, 0, size);
+    std::memcpy(out, &value, size < sizeof(T) ? size : sizeof(T));
+}
+
 } // namespace ctrack
 
 #endif

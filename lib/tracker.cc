@@ -67,6 +67,7 @@ Box Track::box() const
 Engine::Engine(const ct_config &cfg) : cfg_(cfg)
 {
     ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
+    min_rho_ = (int)(cfg.mean_shift_min_similarity * kQ16);
 }
 
 void Engine::reset()
@@ -100,7 +101,6 @@ void Engine::predict(double dt)
 // the person is, before the detections are compared.
 void Engine::refine(const Planes &img)
 {
-    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
     for (size_t i = 0; i < tracks_.size(); i++) {
         Track &t = tracks_[i];
         if (t.state != CT_TRACK_CONFIRMED || !t.model.valid)
@@ -108,7 +108,7 @@ void Engine::refine(const Planes &img)
         Box b = t.box();
         t.ms = ms_.track(img, t.cx.x, t.cy.x, b.width, b.height, t.model, ms_params_);
         ms_runs_++;
-        if (t.ms.rho >= min_rho)
+        if (t.ms.rho >= min_rho_)
             t.cue = Box{t.ms.cx - b.width / 2, t.ms.cy - b.height / 2, b.width, b.height};
     }
 }
@@ -117,11 +117,10 @@ void Engine::refine(const Planes &img)
 // the pixels hold it; otherwise it will be lost.
 void Engine::follow_or_lose(const Planes &img, int64_t t_us)
 {
-    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
     for (size_t i = 0; i < tracks_.size(); i++) {
         Track &t = tracks_[i];
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
-            t.ms.iterations == 0 || t.ms.rho < min_rho)
+            t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
         if ((double)(t_us - t.last_update_us) * 1e-6 > cfg_.mean_shift_max_time)
             continue;
@@ -133,7 +132,7 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (inside_fraction(t.box(), img) < kMinInside)
             continue;
         ms_.scale(img, t.model, ms_params_, &t.ms);
-        if (t.ms.rho < min_rho)
+        if (t.ms.rho < min_rho_)
             continue;
         double sd = kFollowNoiseRatio * cfg_.detection_noise * std::max(t.h.x, kMinSide);
         t.cx.update(t.ms.cx, sd);
@@ -172,7 +171,6 @@ bool Engine::occluded(size_t i) const
 // or the box no longer looks like the model.
 void Engine::learn_models(const Planes &img)
 {
-    const int min_rho = (int)(cfg_.mean_shift_min_similarity * kQ16);
     const int mu = (int)std::lround(cfg_.model_learning_rate * 256);
     for (size_t i = 0; i < tracks_.size(); i++) {
         Track &t = tracks_[i];
@@ -185,7 +183,7 @@ void Engine::learn_models(const Planes &img)
         }
         if (mu == 0 || occluded(i))
             continue;
-        ms_.learn(img, t.cx.x, t.cy.x, b.width, b.height, mu, min_rho, &t.model);
+        ms_.learn(img, t.cx.x, t.cy.x, b.width, b.height, mu, min_rho_, &t.model);
     }
 }
 

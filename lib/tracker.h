@@ -124,6 +124,7 @@ private:
     Assigner assigner_;
     MeanShift ms_;
     MeanShiftParams ms_params_;
+    int min_rho_ = 0; // mean_shift_min_similarity in Q16
 
     // Appearance: templates in slots that tracks point to (a slot no track
     // points to is free), and this step's descriptors of the detections.
