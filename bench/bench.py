@@ -23,23 +23,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(TOP, "tools"))
 import peers  # noqa: E402
+from eval import cache_dir, load_dets, video  # noqa: E402
 from y4m import open_y4m  # noqa: E402
 
 DATA = os.path.join(TOP, "tests", "data", "mot15")
 PETS_DET = os.path.join(DATA, "PETS09-S2L1", "det", "det.txt")
 CORE = 0
-
-
-def cache_dir():
-    d = os.environ.get("CT_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
-    os.makedirs(d, exist_ok=True)
-    return d
-
-
-def pets_y4m():
-    return subprocess.run([os.path.join(TOP, "tools", "fetch-pets09.sh")], check=True,
-                          capture_output=True, text=True).stdout.strip()
 
 
 def pets_hd(src):
@@ -103,11 +92,6 @@ def mog2_ms(y4m, frames):
     return 1e3 * spent / n
 
 
-def load_dets():
-    d = np.loadtxt(PETS_DET, delimiter=",", ndmin=2)
-    return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
@@ -126,7 +110,7 @@ def main():
 
     # 1. The library alone, per stage, memory, allocations (ct-bench).
     with tempfile.NamedTemporaryFile(suffix=".json") as tj:
-        pets = pets_y4m()
+        pets = video("PETS09-S2L1")
         hd, hd_det = pets_hd(pets)
         out = subprocess.run(["taskset", "-c", str(CORE), os.path.join(a.build, "bench", "ct-bench"),
                               "--passes", "3" if a.quick else "15", "--json", tj.name,
@@ -159,7 +143,7 @@ def main():
     say("```")
 
     # 2. Peers on the same detections, in this run.
-    dets = load_dets()
+    dets = load_dets("PETS09-S2L1")
     _, bt = peers.bytetrack(dets, 795, 7)
     _, nf = peers.norfair_iou(dets, 795, 7)
     lib = {r["name"]: r for r in report["library"]["runs"]}

@@ -5,7 +5,6 @@
  *   ct-bench [--json FILE] [--passes N] DATA_DIR     (DATA_DIR: tests/data/mot15)
  */
 #define _GNU_SOURCE
-#include <malloc.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,56 +12,12 @@
 #include <time.h>
 
 #include "ctrack/ctrack.h"
+#include "alloc_count.h"
 #include "detfile.h"
 #include "input.h"
 #include "peakmem.h"
 
-/* --- counting the heap: every malloc of the process, the library's too --- */
-extern void *__libc_malloc(size_t);
-extern void *__libc_calloc(size_t, size_t);
-extern void *__libc_realloc(void *, size_t);
-extern void __libc_free(void *);
-
-static unsigned long long n_allocs;
-static long long live_bytes;
-
-void *malloc(size_t n)
-{
-    void *p = __libc_malloc(n);
-    if (p) {
-        n_allocs++;
-        live_bytes += (long long)malloc_usable_size(p);
-    }
-    return p;
-}
-
-void *calloc(size_t a, size_t b)
-{
-    void *p = __libc_calloc(a, b);
-    if (p) {
-        n_allocs++;
-        live_bytes += (long long)malloc_usable_size(p);
-    }
-    return p;
-}
-
-void *realloc(void *old, size_t n)
-{
-    long long before = old ? (long long)malloc_usable_size(old) : 0;
-    void *p = __libc_realloc(old, n);
-    if (p) {
-        n_allocs++;
-        live_bytes += (long long)malloc_usable_size(p) - before;
-    }
-    return p;
-}
-
-void free(void *p)
-{
-    if (p)
-        live_bytes -= (long long)malloc_usable_size(p);
-    __libc_free(p);
-}
+/* Every heap allocation of the process is counted by alloc_count.c. */
 
 static double now(void)
 {
@@ -214,13 +169,13 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
     cfg.source = source;
-    long long before = live_bytes;
+    long long before = ct_live_bytes;
     ct_tracker *t = NULL;
     if (ct_tracker_create(&cfg, &t) != CT_OK) {
         fprintf(stderr, "ct-bench: create failed\n");
         exit(1);
     }
-    r.tracker_bytes_created = (unsigned long long)(live_bytes - before);
+    r.tracker_bytes_created = (unsigned long long)(ct_live_bytes - before);
     ct_frame f;
     ct_frame_default(&f, sizeof f);
     f.width = w;
@@ -237,7 +192,7 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
     long long step = 0;
     unsigned long long allocs_last = 0;
     for (int p = 0; p < passes; p++) {
-        unsigned long long a0 = n_allocs;
+        unsigned long long a0 = ct_allocations;
         double t0 = now();
         for (int k = 1; k <= frames; k++, step++) {
             f.timestamp_us = (int64_t)llround(step * 1e6 / fps);
@@ -257,7 +212,7 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
             }
         }
         times[p] = (now() - t0) / frames * 1e6;
-        allocs_last = n_allocs - a0;
+        allocs_last = ct_allocations - a0;
     }
     qsort(times, passes, sizeof *times, cmp_double);
     r.us_per_frame = times[passes / 2];
@@ -274,9 +229,9 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
     free(times);
     free(out);
     /* What the tracker holds is what destroying it gives back. */
-    long long held = live_bytes;
+    long long held = ct_live_bytes;
     ct_tracker_destroy(t);
-    r.tracker_bytes_after = (unsigned long long)(held - live_bytes);
+    r.tracker_bytes_after = (unsigned long long)(held - ct_live_bytes);
         return r;
 }
 

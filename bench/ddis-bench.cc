@@ -5,8 +5,6 @@
 // makes (FLANN's KDTreeSingleIndex allocates in findNeighbors and in
 // buildIndex).
 //   ddis-bench [--json FILE] DATA_DIR (tests/data)
-#include <malloc.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -14,37 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "alloc_count.h"
 #include "appearance.h"
 #include "input.h"
-
-extern "C" {
-void *__libc_malloc(size_t);
-void *__libc_calloc(size_t, size_t);
-void *__libc_realloc(void *, size_t);
-void __libc_free(void *);
-}
-
-static unsigned long long n_allocs;
-
-extern "C" void *malloc(size_t n)
-{
-    n_allocs++;
-    return __libc_malloc(n);
-}
-extern "C" void *calloc(size_t a, size_t b)
-{
-    n_allocs++;
-    return __libc_calloc(a, b);
-}
-extern "C" void *realloc(void *p, size_t n)
-{
-    n_allocs++;
-    return __libc_realloc(p, n);
-}
-extern "C" void free(void *p)
-{
-    __libc_free(p);
-}
 
 using namespace ctrack;
 using clk = std::chrono::steady_clock;
@@ -120,17 +90,17 @@ int main(int argc, char **argv)
 
     // Builds: every box's template, several rounds.
     const int rounds = 200;
-    unsigned long long a0 = n_allocs;
+    unsigned long long a0 = ct_allocations;
     auto t0 = clk::now();
     for (int r = 0; r < rounds; r++)
         for (size_t i = 0; i < n; i++)
             templates[i].build(desc[i].data());
     double build_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / (rounds * n);
-    double build_allocs = (double)(n_allocs - a0) / (rounds * n);
+    double build_allocs = (double)(ct_allocations - a0) / (rounds * n);
 
     // DDIS: every template against every box.
     volatile double sink = 0;
-    a0 = n_allocs;
+    a0 = ct_allocations;
     t0 = clk::now();
     const int drounds = 20;
     for (int r = 0; r < drounds; r++)
@@ -139,7 +109,7 @@ int main(int argc, char **argv)
                 sink = sink + ddis.ddis(templates[i], desc[j].data());
     double calls = (double)drounds * n * n;
     double ddis_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / calls;
-    double ddis_allocs = (double)(n_allocs - a0) / calls;
+    double ddis_allocs = (double)(ct_allocations - a0) / calls;
 
     std::printf("DDIS at PETS09-S2L1 box sizes (mean height %.0f px), template of %d x %d points "
                 "of %d numbers:\n", heights / n, kGridX, kGridY, kDescDim);

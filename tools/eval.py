@@ -37,15 +37,20 @@ def seqinfo(seq):
             "width": int(s["imWidth"]), "height": int(s["imHeight"])}
 
 
+def cache_dir():
+    """Where decoded videos are kept: $CT_CACHE, as tools/fetch-pets09.sh."""
+    d = os.environ.get("CT_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
+    os.makedirs(d, exist_ok=True)
+    return d
+
+
 def video(seq):
     """A cached Y4M of the sequence's frames."""
     if seq == "PETS09-S2L1":
         return subprocess.run([os.path.join(HERE, "fetch-pets09.sh")], check=True,
                               capture_output=True, text=True).stdout.strip()
-    cache = os.environ.get("CT_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
-    os.makedirs(cache, exist_ok=True)
-    out = os.path.join(cache, seq.lower() + ".y4m")
+    out = os.path.join(cache_dir(), seq.lower() + ".y4m")
     if not os.path.exists(out):
         subprocess.run(["ffmpeg", "-v", "error", "-y", "-i",
                         os.path.join(DATA, seq, "video.mp4"), "-f", "yuv4mpegpipe",

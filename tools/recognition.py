@@ -159,7 +159,7 @@ def main():
     pc, pl = sets["PETS09-S2L1"]
     train = pc[:, 0] <= 400
     th = choose_thresholds(pc[train][:, 8:17], pl[train])
-    size = choose_size_filter(pc[train][:, 1:5], pl[train][:, ] if False else pl[train])
+    size = choose_size_filter(pc[train][:, 1:5], pl[train])
     rows = []
     parts = [("PETS09-S2L1 frames 1-400 (chosen on)", pc[train], pl[train], "PETS09-S2L1"),
              ("PETS09-S2L1 frames 401-795", pc[~train], pl[~train], "PETS09-S2L1"),
