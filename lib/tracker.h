@@ -80,6 +80,14 @@ public:
     // Nanoseconds spent in each ct_stage, summed over the steps.
     const uint64_t *stage_ns() const { return stage_ns_; }
     bool has_time() const { return has_time_; }
+    // This step's cleaned foreground mask at the background model's scale
+    // (Background::kScale), or null when the step had no pixels.
+    const uint8_t *foreground(int *w, int *h) const
+    {
+        *w = background_.width();
+        *h = background_.height();
+        return have_mask_ ? blobs_.cleaned() : nullptr;
+    }
     int64_t last_time() const { return last_us_; }
 
 private:

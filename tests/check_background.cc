@@ -5,7 +5,9 @@
 #include "common.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "background.h"
@@ -13,6 +15,8 @@
 #include "contour_template.h"
 
 using namespace ctrack;
+
+static std::string data_dir;
 
 namespace {
 
@@ -220,8 +224,79 @@ START_TEST(occluded_regions_abstain)
 }
 END_TEST
 
-int main()
+namespace {
+
+// One blob of tests/data/blobs/labelled.bin (tools/recognition.py): the
+// masks the background model gave on held-out frames, labelled by rule
+// against the ground truth.
+struct RealBlob {
+    int label, sequence, frame, w, h;
+    std::vector<uint8_t> mask; // 0 or 255, w x h
+};
+
+std::vector<RealBlob> real_blobs()
 {
+    const std::string path = data_dir + "/blobs/labelled.bin";
+    FILE *f = std::fopen(path.c_str(), "rb");
+    ck_assert_msg(f != nullptr, "cannot open %s", path.c_str());
+    std::vector<RealBlob> out;
+    int32_t head[5];
+    while (std::fread(head, sizeof head, 1, f) == 1) {
+        RealBlob b{head[0], head[1], head[2], head[3], head[4], {}};
+        ck_assert(b.w > 0 && b.h > 0 && b.w < 4096 && b.h < 4096);
+        std::vector<uint8_t> bits(((size_t)b.w * b.h + 7) / 8);
+        ck_assert_uint_eq(std::fread(bits.data(), 1, bits.size(), f), bits.size());
+        b.mask.resize((size_t)b.w * b.h);
+        for (size_t i = 0; i < b.mask.size(); i++)
+            b.mask[i] = (bits[i / 8] >> (7 - i % 8)) & 1 ? 255 : 0;
+        out.push_back(std::move(b));
+    }
+    std::fclose(f);
+    return out;
+}
+
+} // namespace
+
+// The classifier on real blobs it was not tuned on (PETS09-S2L1 frames
+// 401-795 and TUD-Campus): people's blobs accepted, blobs on no one
+// rejected, at the rates docs/recognition.md reports less a margin.
+// Accepting everything or nothing, or a vote that ignores the shape, fails.
+START_TEST(real_blobs_are_classified)
+{
+    const std::vector<RealBlob> blobs = real_blobs();
+    int n[2][2] = {}, ok[2][2] = {}; // [sequence][label]
+    Shape shape;
+    for (const RealBlob &b : blobs) {
+        ck_assert(b.sequence == 0 || b.sequence == 1);
+        ck_assert(b.label == 0 || b.label == 1);
+        profile_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape.profile);
+        outline_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape.outline);
+        const bool person = classify(shape, default_thresholds()).score > 0.5f;
+        n[b.sequence][b.label]++;
+        ok[b.sequence][b.label] += person == (b.label == 1);
+    }
+    const char *names[2] = {"PETS09-S2L1 401-795", "TUD-Campus"};
+    for (int s = 0; s < 2; s++) {
+        ck_assert_int_ge(n[s][0], 50);
+        ck_assert_int_ge(n[s][1], 50);
+        const double tpr = (double)ok[s][1] / n[s][1], tnr = (double)ok[s][0] / n[s][0];
+        std::printf("real blobs, %s: %d people, %d not; accepted %.1f%%, rejected %.1f%%, "
+                    "balanced accuracy %.1f%%\n",
+                    names[s], n[s][1], n[s][0], 100 * tpr, 100 * tnr, 50 * (tpr + tnr));
+        ck_assert_msg(tpr >= 0.70 && tnr >= 0.60 && tpr + tnr >= 2 * 0.75,
+                      "%s: people accepted %.1f%%, others rejected %.1f%%", names[s],
+                      100 * tpr, 100 * tnr);
+    }
+}
+END_TEST
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: check_background TESTS_DATA_DIR\n");
+        return 2;
+    }
+    data_dir = argv[1];
     Suite *s = suite_create("background");
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
@@ -232,6 +307,7 @@ int main()
     tcase_add_test(tc, fragments_merge_and_groups_split);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, occluded_regions_abstain);
+    tcase_add_test(tc, real_blobs_are_classified);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

@@ -20,7 +20,11 @@ defines it, and the thresholds of the contour template's regions.
    TUD-Campus, beside a size-and-aspect-ratio filter whose bounds are chosen
    on the same frames 1-400, and the candidates' recall and precision.
 
-With --write it rewrites lib/region_thresholds.inc and docs/recognition.md.
+With --write it rewrites lib/region_thresholds.inc, docs/recognition.md and
+tests/data/blobs/labelled.bin: the masks of held-out blobs (every negative of
+PETS09-S2L1 frames 401-795 and of TUD-Campus, and as many positives drawn at
+random with a fixed seed) for the contour template's unit test, taken by
+tools/dump-blobs from the same run.
 """
 import argparse
 import configparser
@@ -61,10 +65,58 @@ def candidates(build, seq):
     return np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
 
 
+def blob_masks(build, seq, cands):
+    """The masks of the candidates (tools/dump-blobs runs the same tracker
+    and must find the same blobs): (frame, x0, y0, w, h, mask) in working
+    pixels, one per candidate row."""
+    path = os.path.join(build, "recognition-%s.blobs" % seq)
+    subprocess.run([os.path.join(build, "tools", "dump-blobs"), video(seq), path], check=True)
+    data = open(path, "rb").read()
+    out, i = [], 0
+    while i < len(data):
+        f, x, y, w, h = (int(v) for v in np.frombuffer(data, "<i4", 5, i))
+        i += 20
+        out.append((f, x, y, w, h, np.frombuffer(data, np.uint8, w * h, i).reshape(h, w)))
+        i += w * h
+    boxes = np.array([[b[0], 2 * b[1], 2 * b[2], 2 * b[3], 2 * b[4]] for b in out])
+    if boxes.shape != (len(cands), 5) or not (boxes == cands[:, :5]).all():
+        sys.exit("recognition: dump-blobs and ct-track found different blobs on %s" % seq)
+    return out
+
+
+def write_test_blobs(build, sets):
+    """tests/data/blobs/labelled.bin: records of little-endian int32 label (1
+    person, 0 not), sequence (0 PETS09-S2L1, 1 TUD-Campus), frame, width,
+    height, then the mask, one bit a pixel, rows in order, most significant
+    bit first (numpy.packbits of the flattened mask)."""
+    rng = np.random.default_rng(2026)
+    out = bytearray()
+    counts = []
+    for k, (seq, first) in enumerate((("PETS09-S2L1", 401), ("TUD-Campus", 1))):
+        c, lab = sets[seq]
+        masks = blob_masks(build, seq, c)
+        held = c[:, 0] >= first
+        neg = np.flatnonzero(held & (lab == 0))
+        pos = np.flatnonzero(held & (lab == 1))
+        pos = np.sort(rng.choice(pos, min(len(pos), len(neg)), replace=False))
+        counts.append((seq, len(pos), len(neg)))
+        for i in np.concatenate([pos, neg]):
+            f, _, _, w, h, m = masks[i]
+            out += np.array([int(lab[i]), k, f, w, h], "<i4").tobytes()
+            out += np.packbits((m.ravel() != 0).astype(np.uint8)).tobytes()
+    d = os.path.join(TOP, "tests", "data", "blobs")
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, "labelled.bin"), "wb") as f:
+        f.write(bytes(out))
+    for seq, p, n in counts:
+        print("test blobs: %s %d positives, %d negatives" % (seq, p, n))
+
+
 def label(cands, seq):
-    """+1 positive, 0 negative, -1 left out, for every candidate row."""
+    """+1 positive, 0 negative, -1 left out, for every candidate row. Every
+    ground-truth box is a person, also those the MOTChallenge scoring ignores
+    (flag 0: PETS09-S2L1's people far off in the top right corner)."""
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
-    gt = gt[gt[:, 6] != 0]
     labels = np.full(len(cands), -1)
     for i, row in enumerate(cands):
         boxes = gt[gt[:, 0] == row[0]][:, 2:6]
@@ -130,21 +182,22 @@ def choose_size_filter(box, lab):
 
 
 def recall_precision(cands, pred, seq):
-    """Candidates the vote keeps against the ground truth (IoU >= 0.5)."""
+    """Candidates the vote keeps against the ground truth (IoU >= 0.5): recall
+    of the boxes the scoring considers, precision against every box."""
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
-    gt = gt[gt[:, 6] != 0]
     found, kept_ok = 0, 0
     kept = cands[pred]
     for f in np.unique(gt[:, 0]):
-        boxes = gt[gt[:, 0] == f][:, 2:6]
+        rows = gt[gt[:, 0] == f]
+        boxes = rows[:, 2:6]
         c = kept[kept[:, 0] == f][:, 1:5]
-        for b in boxes:
+        for b in boxes[rows[:, 6] != 0]:
             if len(c) and iou(b, c)[0].max() >= 0.5:
                 found += 1
         for b in c:
             if iou(b, boxes)[0].max() >= 0.5:
                 kept_ok += 1
-    return 100.0 * found / len(gt), 100.0 * kept_ok / max(1, len(kept))
+    return 100.0 * found / (gt[:, 6] != 0).sum(), 100.0 * kept_ok / max(1, len(kept))
 
 
 def main():
@@ -180,6 +233,7 @@ def main():
                                                100 * r[4][2], 100 * r[5][0], r[6][0], r[6][1]))
     if not a.write:
         return
+    write_test_blobs(a.build, sets)
     with open(os.path.join(TOP, "lib", "region_thresholds.inc"), "w") as f:
         f.write("// The thresholds of eq. (1)'s regions (box heights), in region order: head,\n"
                 "// neck, shoulders, chest, back, abdomen, buttocks, upper limbs, lower\n"

@@ -1,0 +1,79 @@
+// Writes the masks of the blobs the pixels-only tracker finds, for
+// tools/recognition.py: the labelled set of ALGORITHM.md ("Measures") and
+// the real blobs of the contour template's unit test. Internal: it links the
+// engine itself, to reach its foreground mask. Not installed.
+//
+//   dump-blobs VIDEO.y4m OUT
+//
+// OUT is a sequence of records, little-endian int32: frame (from 1), x0, y0,
+// width, height of the blob at the mask's scale, then width * height bytes of
+// the cleaned mask inside the box (0 or 255).
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "input.h"
+#include "tracker.h"
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: dump-blobs VIDEO.y4m OUT\n");
+        return 2;
+    }
+    char err[256];
+    ct_input *in = nullptr;
+    ct_input_info info;
+    ct_input_params params = {};
+    if (ct_input_open(argv[1], &params, &in, &info, err, sizeof err) != 0) {
+        std::fprintf(stderr, "dump-blobs: %s\n", err);
+        return 1;
+    }
+    FILE *out = std::fopen(argv[2], "wb");
+    if (!out) {
+        std::perror(argv[2]);
+        ct_input_close(in);
+        return 1;
+    }
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    cfg.source = CT_SOURCE_PIXELS;
+    ctrack::Engine engine(cfg);
+    const double rate = info.rate_num > 0 && info.rate_den > 0
+                            ? (double)info.rate_num / info.rate_den : 25.0;
+    ct_frame f;
+    std::vector<uint8_t> crop;
+    int status = 0;
+    for (int32_t k = 1;; k++) {
+        const int r = ct_input_read(in, &f, err, sizeof err);
+        if (r == 0)
+            break;
+        if (r < 0) {
+            std::fprintf(stderr, "dump-blobs: %s\n", err);
+            status = 1;
+            break;
+        }
+        f.timestamp_us = (int64_t)(k * 1e6 / rate);
+        engine.step(f.timestamp_us, ctrack::Planes::of(f), ctrack::ImageSize{f.width, f.height},
+                    nullptr, 0);
+        int w, h;
+        const uint8_t *mask = engine.foreground(&w, &h);
+        const int s = ctrack::Background::kScale;
+        for (const ct_candidate &c : engine.candidates()) {
+            const int32_t head[5] = {k, (int32_t)(c.left / s), (int32_t)(c.top / s),
+                                     (int32_t)(c.width / s), (int32_t)(c.height / s)};
+            crop.resize((size_t)head[3] * head[4]);
+            for (int y = 0; y < head[4]; y++)
+                std::memcpy(&crop[(size_t)y * head[3]], mask + (size_t)(head[2] + y) * w + head[1],
+                            (size_t)head[3]);
+            std::fwrite(head, sizeof head, 1, out);
+            std::fwrite(crop.data(), 1, crop.size(), out);
+        }
+    }
+    ct_input_close(in);
+    if (std::fclose(out) != 0) {
+        std::perror(argv[2]);
+        status = 1;
+    }
+    return status;
+}
