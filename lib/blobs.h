@@ -26,7 +26,9 @@ public:
     // into equal parts at the valleys of the column profile.
     void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
               std::vector<Rect> &out);
-    // The cleaned mask of the last find().
+    // Only the cleaning: the closing of the w x h mask.
+    void clean(const uint8_t *mask, int w, int h);
+    // The cleaned mask of the last find() or clean().
     const uint8_t *cleaned() const;
     size_t memory_bytes() const;
 

@@ -38,6 +38,7 @@ ct_config default_config()
     c.reid_min_similarity = 0.1f;
     c.reid_max_speed = 1.5f;
     c.candidate_min_score = 0.7f;
+    c.verify_detections = 0;
     return c;
 }
 
@@ -155,6 +156,9 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.candidate_min_score: %g is not in [low_score = %g, 1]",
                     (double)c.candidate_min_score, (double)c.low_score);
+    if (c.verify_detections != 0 && c.verify_detections != 1)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.verify_detections: %d is not 0 or 1", (int)c.verify_detections);
     if (out)
         *out = c;
     return CT_OK;

@@ -379,9 +379,8 @@ static Rect to_working(const Box &b)
                 (int)std::ceil((b.left + b.width) / s), (int)std::ceil((b.top + b.height) / s)};
 }
 
-void Engine::find_candidates(const Planes &img)
+void Engine::update_background(const Planes &img)
 {
-    Stopwatch sw;
     frozen_.clear();
     predicted_.clear();
     for (const Track &t : tracks_) {
@@ -396,6 +395,39 @@ void Engine::find_candidates(const Planes &img)
             frozen_.push_back(predicted_.back());
     }
     background_.apply(img, frozen_.data(), (int)frozen_.size());
+}
+
+ct_candidate Engine::vote_on(Rect r, float left, float top, float width, float height)
+{
+    r.x0 = std::max(r.x0, 0);
+    r.y0 = std::max(r.y0, 0);
+    r.x1 = std::min(r.x1, background_.width());
+    r.y1 = std::min(r.y1, background_.height());
+    ct_candidate c = {};
+    c.left = left;
+    c.top = top;
+    c.width = width;
+    c.height = height;
+    if (r.x1 <= r.x0 || r.y1 <= r.y0) {
+        for (float &d : c.region_distance)
+            d = -1;
+        return c; // outside the image: no voters
+    }
+    profile_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.profile);
+    outline_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.outline);
+    const Vote v = classify(shape_, default_thresholds());
+    c.score = v.score;
+    c.votes_yes = v.yes;
+    c.voters = v.voters;
+    for (int g = 0; g < kRegions; g++)
+        c.region_distance[g] = v.distance[g];
+    return c;
+}
+
+void Engine::find_candidates(const Planes &img)
+{
+    Stopwatch sw;
+    update_background(img);
     stage_ns_[CT_STAGE_BACKGROUND] += sw.lap();
     blobs_.find(background_.mask(), background_.width(), background_.height(), predicted_.data(),
                 (int)predicted_.size(), blob_rects_);
@@ -405,21 +437,34 @@ void Engine::find_candidates(const Planes &img)
     candidates_.clear();
     const int s = Background::kScale;
     for (const Rect &r : blob_rects_) {
-        profile_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.profile);
-        outline_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.outline);
-        Vote v = classify(shape_, default_thresholds());
-        ct_candidate c = {};
-        c.left = (float)(r.x0 * s);
-        c.top = (float)(r.y0 * s);
-        c.width = (float)((r.x1 - r.x0) * s);
-        c.height = (float)((r.y1 - r.y0) * s);
-        c.score = v.score;
-        c.votes_yes = v.yes;
-        c.voters = v.voters;
-        for (int g = 0; g < kRegions; g++)
-            c.region_distance[g] = v.distance[g];
+        const ct_candidate c = vote_on(r, (float)(r.x0 * s), (float)(r.y0 * s),
+                                       (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
         candidates_.push_back(c);
         cand_dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
+    }
+    stage_ns_[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+void Engine::verify_detections(const Planes &img, const ct_detection *dets, size_t n)
+{
+    Stopwatch sw;
+    update_background(img);
+    stage_ns_[CT_STAGE_BACKGROUND] += sw.lap();
+    blobs_.clean(background_.mask(), background_.width(), background_.height());
+    have_mask_ = true;
+    stage_ns_[CT_STAGE_BLOBS] += sw.lap();
+    cand_dets_.clear();
+    candidates_.clear();
+    for (size_t j = 0; j < n; j++) {
+        const ct_detection &d = dets[j];
+        const ct_candidate c = vote_on(to_working(Box{d.left, d.top, d.width, d.height}), d.left,
+                                       d.top, d.width, d.height);
+        candidates_.push_back(c);
+        ct_detection v = d;
+        // Rejected: enough regions voted and no majority said pedestrian.
+        if (c.voters >= kMinVoters && 2 * c.votes_yes <= c.voters)
+            v.score *= c.score;
+        cand_dets_.push_back(v);
     }
     stage_ns_[CT_STAGE_CLASSIFY] += sw.lap();
 }
@@ -488,6 +533,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
             find_candidates(img);
         dets = cand_dets_.data();
         n = cand_dets_.size();
+        sw.lap();
+    } else if (cfg_.verify_detections && !img.empty()) {
+        verify_detections(img, dets, n);
+        dets = cand_dets_.data();
         sw.lap();
     }
     if (pixels) {

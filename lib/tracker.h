@@ -104,6 +104,16 @@ private:
     // Source pixels: candidates from the background model and the contour
     // template, into cand_dets_ (as detections) and candidates_.
     void find_candidates(const Planes &img);
+    // verify_detections: the background model's foreground, the contour
+    // template's vote on each detection into candidates_, and the
+    // detections with their scores lowered where the vote rejects them
+    // into cand_dets_.
+    void verify_detections(const Planes &img, const ct_detection *dets, size_t n);
+    // The background model over this frame (tracks that moved are frozen).
+    void update_background(const Planes &img);
+    // The contour template's vote on the cleaned mask inside r (clipped),
+    // as a candidate with the box `box`.
+    ct_candidate vote_on(Rect r, float left, float top, float width, float height);
     // The centroid of the foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     bool occluded(size_t i) const;

@@ -366,6 +366,102 @@ START_TEST(pixels_alone)
 }
 END_TEST
 
+/* A pedestrian's shape 70 pixels tall, its top centre at (cx, top): head,
+ * neck, torso with arms, and two legs, drawn over what is there. */
+static void draw_pedestrian(image *im, double cx, int top)
+{
+    for (int y = top; y < top + 70; y++)
+        for (int x = (int)cx - 20; x <= (int)cx + 20; x++) {
+            const double u = (x - cx) / 70, v = (y - top) / 70.0;
+            bool in;
+            if (v < 0.13)
+                in = u * u / 0.0036 + (v - 0.065) * (v - 0.065) / 0.0042 <= 1;
+            else if (v < 0.16)
+                in = fabs(u) < 0.035;
+            else if (v < 0.55)
+                in = fabs(u) < 0.13 - 0.03 * (v - 0.16) / 0.39;
+            else
+                in = fabs(u) < 0.11 && fabs(u) > 0.1 * (v - 0.55) / 0.45 * 0.5;
+            if (!in)
+                continue;
+            im->y[y * W + x] = (uint8_t)(60 + (x * 5 + y * 3) % 9);
+            im->u[(y / 2) * (W / 2) + x / 2] = 90;
+            im->v[(y / 2) * (W / 2) + x / 2] = 200;
+            im->uv[(y / 2) * W + 2 * (x / 2)] = 90;
+            im->uv[(y / 2) * W + 2 * (x / 2) + 1] = 200;
+        }
+}
+
+/* A car: a wide dark rectangle with its top-left corner at (x0, y0). */
+static void draw_car(image *im, int x0, int y0)
+{
+    for (int y = y0; y < y0 + 40; y++)
+        for (int x = x0; x < x0 + 100; x++) {
+            im->y[y * W + x] = (uint8_t)(30 + (x * 3 + y * 5) % 7);
+            im->u[(y / 2) * (W / 2) + x / 2] = 150;
+            im->v[(y / 2) * (W / 2) + x / 2] = 150;
+        }
+    for (int y = y0 / 2; y < (y0 + 40) / 2; y++)
+        for (int x = x0 / 2; x < (x0 + 100) / 2; x++) {
+            im->uv[y * W + 2 * x] = im->u[y * (W / 2) + x];
+            im->uv[y * W + 2 * x + 1] = im->v[y * (W / 2) + x];
+        }
+}
+
+/* verify_detections: a person walks and a car drives by, and the detector
+ * reports both with a high score. With verification, the contour template
+ * accepts the person and rejects the car, which starts no track; without,
+ * both are tracked. A detection over still background (no foreground to
+ * vote on) is left as it is. */
+static size_t drive_by(int verify, ct_candidate *cand, size_t *nc, ct_track *out)
+{
+    ct_config cfg = test_config();
+    cfg.verify_detections = verify;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    size_t n = 0;
+    for (int k = 0; k < 30; k++) {
+        const double cx = 40 + 5.0 * k;
+        const int car_x = 200 - 4 * k;
+        draw(&im, -1, 0);
+        draw_pedestrian(&im, cx, 45);
+        draw_car(&im, car_x, 170);
+        const ct_detection d[3] = {test_det((float)(cx - 15), 45, 30, 70, 0.9f),
+                                   test_det((float)car_x, 170, 100, 40, 0.9f),
+                                   test_det(270, 20, 30, 70, 0.9f)};
+        n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, d, 3, out);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], nc), CT_OK);
+    }
+    ct_tracker_destroy(t);
+    return n;
+}
+
+START_TEST(verify_detections_rejects_a_car)
+{
+    ct_candidate cand[32];
+    ct_track out[64];
+    size_t nc = 0;
+    size_t n = drive_by(0, cand, &nc, out);
+    ck_assert_uint_eq(nc, 0);
+    ck_assert_uint_eq(n, 3); /* person, car and the still box */
+
+    n = drive_by(1, cand, &nc, out);
+    ck_assert_uint_eq(nc, 3); /* one vote per detection, in order */
+    ck_assert_float_eq(cand[1].left, 200 - 4 * 29);
+    ck_assert_float_eq(cand[1].width, 100);
+    ck_assert_msg(cand[0].voters >= 5 && 2 * cand[0].votes_yes > cand[0].voters,
+                  "the person: %d of %d regions said yes", cand[0].votes_yes, cand[0].voters);
+    ck_assert_msg(cand[1].voters >= 5 && 2 * cand[1].votes_yes <= cand[1].voters,
+                  "the car: %d of %d regions said yes", cand[1].votes_yes, cand[1].voters);
+    ck_assert_int_lt(cand[2].voters, 5); /* still background: abstains */
+    ck_assert_uint_eq(n, 2);
+    bool car = false;
+    for (size_t i = 0; i < n; i++)
+        car |= out[i].height < 50;
+    ck_assert_msg(!car, "the car was tracked");
+}
+END_TEST
+
 /* Pixels that come and go (some frames without) change nothing bad. */
 START_TEST(frames_with_and_without_pixels)
 {
@@ -400,6 +496,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, reidentifies_by_appearance);
     tcase_add_test(tc, threads_with_pixels);
     tcase_add_test(tc, pixels_alone);
+    tcase_add_test(tc, verify_detections_rejects_a_car);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -30,6 +30,8 @@ ffmpeg -v error -i "$data/TUD-Campus/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p
 check "TUD-Campus, detections + pixels" TUD-Campus 68.0 76.5 "$tmp/tud.y4m"
 pets=$("$here/../tools/fetch-pets09.sh")
 check "PETS09-S2L1, detections + pixels" PETS09-S2L1 68.5 74.5 "$pets"
+check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 68.0 76.0 \
+    -p verify_detections=1 "$pets"
 # From the pixels alone (docs/pixels.md).
 check "PETS09-S2L1, pixels only" PETS09-S2L1 52.5 55.5 -r 7 "$pets"
 exit $fail

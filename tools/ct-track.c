@@ -49,6 +49,7 @@ static const param_def params[] = {
     {"reid_min_similarity", 'f', offsetof(ct_config, reid_min_similarity), "DDIS to re-identify a lost track"},
     {"reid_max_speed", 'f', offsetof(ct_config, reid_max_speed), "re-identification reach, box heights/s"},
     {"candidate_min_score", 'f', offsetof(ct_config, candidate_min_score), "pixels only: vote that starts tracks"},
+    {"verify_detections", 'i', offsetof(ct_config, verify_detections), "1: the contour template checks each detection"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)

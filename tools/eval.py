@@ -118,6 +118,8 @@ TRACKERS = [
     ("ctrack-detpix", "ctrack", "detections + pixels"),
     ("ctrack-detpix-noms", "ctrack, mean shift off (ablation)", "detections + pixels"),
     ("ctrack-detpix-noapp", "ctrack, DDIS off (ablation)", "detections + pixels"),
+    ("ctrack-detpix-verify", "ctrack, detections verified by the contour template",
+     "detections + pixels"),
     ("ctrack-pix", "ctrack", "pixels"),
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections"),
     ("norfair", "norfair 2.3.0 (IoU)", "detections"),
@@ -150,6 +152,9 @@ def main():
             elif key == "ctrack-detpix-noms":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
                                      params=["mean_shift=0"])
+            elif key == "ctrack-detpix-verify":
+                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
+                                     params=["verify_detections=1"])
             elif key == "ctrack-pix":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True, detections=False)
             elif key == "ctrack-detpix-noapp":
@@ -254,6 +259,10 @@ NOTES = """## Notes
   coasting longer. "DDIS off" is the same run with `appearance=0`: no appearance
   term in the association cost and no re-identification of lost tracks, the
   lost-track lifetime unchanged (docs/appearance.md).
+- **Verified detections.** The "detections + pixels" run with
+  `verify_detections=1`: the contour template votes on the foreground inside
+  each detection's box, and a detection it rejects can no longer start a track
+  (docs/pixels.md). An option, off by default.
 - **Peers.** ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
   to the sequence's); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
   baseline is OpenCV's MOG2 (defaults, shadows dropped), a 3x3 opening and a 7x7

@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 4
+#define CT_VERSION_MINOR 5
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -169,6 +169,20 @@ typedef struct ct_config {
      * scores: candidates whose contour-template vote reaches it, in [0, 1],
      * are matched first and may start tracks. */
     float candidate_min_score;
+
+    /* Added in 0.5.0. */
+
+    /* Non-zero: with source CT_SOURCE_DETECTIONS and frames that carry
+     * pixels, the background model runs too and the contour template votes
+     * on the foreground inside each detection's box. A detection the vote
+     * rejects (at least 5 regions vote and no majority of them says
+     * pedestrian) has its score multiplied by the vote's score: it may still
+     * continue a confirmed track in the low-score pass, but it starts none.
+     * Where too little of the box is foreground to vote (a person standing
+     * still, or hidden), the detection is left as it is.
+     * ct_tracker_get_candidates() then returns one vote per detection, in
+     * their order. 0 (the default) does not verify. */
+    int32_t verify_detections;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
@@ -279,7 +293,9 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
 /* ------------------------------------------------------------------------ */
-/* Candidates found in the pixels (source CT_SOURCE_PIXELS), 0.4.0. */
+/* Candidates found in the pixels (source CT_SOURCE_PIXELS), 0.4.0, or the
+ * external detections as the contour template voted on them
+ * (verify_detections, 0.5.0). */
 
 #define CT_REGIONS 9
 
@@ -291,13 +307,15 @@ typedef struct ct_candidate {
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,
      * abdomen, buttocks, upper limbs, lower limbs): the mean distance, in
-     * box widths, between the blob's contour and the best silhouette's; -1
+     * box heights, between the blob's contour and the best silhouette's; -1
      * where the region abstained (occluded or out of the frame). */
     float region_distance[CT_REGIONS];
 } ct_candidate;
 
 /* Copies the candidates of the last step, like ct_tracker_get_tracks() (in
- * the order found). With source CT_SOURCE_DETECTIONS there are none. */
+ * the order found). With source CT_SOURCE_DETECTIONS there are none, unless
+ * verify_detections is set and the frame had pixels: then one per detection
+ * given, in order, with the box as given. */
 CT_API int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out,
                                      size_t capacity, size_t elem_size, size_t *count);
 

@@ -59,6 +59,7 @@ class Config(C.Structure):
         ("reid_min_similarity", C.c_float),
         ("reid_max_speed", C.c_float),
         ("candidate_min_score", C.c_float),
+        ("verify_detections", C.c_int32),
     ]
 
 
