@@ -39,6 +39,7 @@ struct BlobFinder::Impl {
     std::vector<std::vector<cv::Point>> contours;
     std::vector<Rect> blobs;
     std::vector<int> columns, centres;
+    std::vector<float> votes;
     Shape shape;
 };
 
@@ -53,7 +54,7 @@ const uint8_t *BlobFinder::cleaned() const
 size_t BlobFinder::memory_bytes() const
 {
     return impl_->clean.total() + impl_->tmp.total() + impl_->blobs.capacity() * sizeof(Rect) +
-           impl_->columns.capacity() * sizeof(int);
+           impl_->columns.capacity() * sizeof(int) + impl_->votes.capacity() * sizeof(float);
 }
 
 float BlobFinder::vote(const Rect &r)
@@ -95,6 +96,14 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     // Fragments of one person (head, torso, legs split by clothes that match
     // the background) lie one above the other: merge them while the union
     // still has a person's shape.
+    // Each blob's vote, computed when first needed (NaN: not yet).
+    std::vector<float> &votes = m.votes;
+    votes.assign(b.size(), NAN);
+    auto vote_of = [&](size_t k) {
+        if (std::isnan(votes[k]))
+            votes[k] = vote(b[k]);
+        return votes[k];
+    };
     for (bool merged = true; merged;) {
         merged = false;
         for (size_t i = 0; i < b.size() && !merged; i++)
@@ -109,10 +118,16 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                     continue;
                 // Close fragments merge; farther ones only when the union
                 // looks more like a person than either part does.
-                if (gap > kMergeGap * tall && !(vote(u) > std::max(vote(p), vote(q))))
-                    continue;
+                float vu = NAN;
+                if (gap > kMergeGap * tall) {
+                    vu = vote(u);
+                    if (!(vu > std::max(vote_of(i), vote_of(j))))
+                        continue;
+                }
                 b[i] = u;
+                votes[i] = vu;
                 b.erase(b.begin() + j);
+                votes.erase(votes.begin() + j);
                 merged = true;
             }
     }

@@ -69,6 +69,36 @@ constexpr PointTable make_points()
 
 constexpr PointTable kPoints = make_points();
 
+// The same points grouped by region, for classify(): each silhouette's
+// cells of region g are cell[s][start[s][g]] up to cell[s][start[s][g + 1]]
+// (a point in two regions is listed in both).
+constexpr int kMaxEntries = 2 * kOutlinePoints;
+struct RegionCells {
+    uint16_t cell[kSilhouettes][kMaxEntries];
+    uint16_t start[kSilhouettes][kRegions + 1];
+};
+
+constexpr RegionCells make_region_cells()
+{
+    RegionCells t{};
+    for (int s = 0; s < kSilhouettes; s++) {
+        int k = 0;
+        for (int g = 0; g < kRegions; g++) {
+            t.start[s][g] = (uint16_t)k;
+            for (int i = 0; i < kOutlinePoints; i++)
+                if (kPoints.p[s][i].regions & (1u << g)) {
+                    if (k == kMaxEntries)
+                        throw "a point is in more than two regions"; // not a constant
+                    t.cell[s][k++] = kPoints.p[s][i].cell;
+                }
+        }
+        t.start[s][kRegions] = (uint16_t)k;
+    }
+    return t;
+}
+
+constexpr RegionCells kRegionCells = make_region_cells();
+
 const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "back",
                                       "abdomen", "buttocks", "upper limbs", "lower limbs"};
 
@@ -169,18 +199,21 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
     }
     Vote best;
     float best_total = INFINITY;
+    const uint16_t *dist = &shape.outline.dist[0][0];
     for (int s = 0; s < kSilhouettes; s++) {
-        float sum[kRegions] = {0};
+        // Sums of chamfer units, exact in integers.
+        uint32_t sum[kRegions] = {0};
         int n[kRegions] = {0};
-        const uint16_t *dist = &shape.outline.dist[0][0];
-        for (int k = 0; k < kOutlinePoints; k++) {
-            const PointInfo &pt = kPoints.p[s][k];
-            const float d = dist[pt.cell] * (1.0f / (3 * kGrid)); // box heights
-            for (unsigned bits = pt.regions; bits; bits &= bits - 1) {
-                const int g = __builtin_ctz(bits);
-                sum[g] += d;
-                n[g]++;
-            }
+        const uint16_t *cell = kRegionCells.cell[s];
+        const uint16_t *start = kRegionCells.start[s];
+        for (int g = 0; g < kRegions; g++) {
+            if (!votes[g])
+                continue;
+            uint32_t acc = 0;
+            for (int k = start[g]; k < start[g + 1]; k++)
+                acc += dist[cell[k]];
+            sum[g] = acc;
+            n[g] = start[g + 1] - start[g];
         }
         Vote v;
         float total = 0;
@@ -189,7 +222,7 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
                 v.distance[g] = -1;
                 continue;
             }
-            v.distance[g] = sum[g] / n[g];
+            v.distance[g] = (float)sum[g] / n[g] * (1.0f / (3 * kGrid)); // box heights
             v.voters++;
             v.yes += v.distance[g] <= th.t[g];
             total += v.distance[g];

@@ -77,6 +77,49 @@ START_TEST(moving_square_is_foreground)
 }
 END_TEST
 
+// Every column is modelled alike, the last ones too: on frames whose
+// working width (83) is not a multiple of the pixels the model handles at
+// once, a bar moving across the whole width is foreground in every column
+// it covers, in grey and in colour, and the still background is not.
+START_TEST(every_column_is_modelled)
+{
+    const int w = 166, h = 40;
+    std::vector<uint8_t> y(w * h), u((w / 2) * (h / 2), 128), v((w / 2) * (h / 2), 128);
+    for (int colour = 0; colour < 2; colour++) {
+        Background bg;
+        Planes p;
+        p.width = w;
+        p.height = h;
+        p.y = y.data();
+        p.y_stride = w;
+        if (colour) {
+            p.u = u.data();
+            p.v = v.data();
+            p.u_stride = p.v_stride = w / 2;
+            p.color = true;
+        }
+        for (int k = 0; k < 40; k++) {
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                    y[r * w + c] = (uint8_t)(90 + (r * 7 + c * 13) % 5);
+            const int x0 = w - 12 - 2 * (39 - k); // ends at the right edge
+            for (int r = 10; r < 30; r++)
+                for (int c = x0; c < x0 + 12; c++)
+                    y[r * w + c] = 220;
+            bg.apply(p, nullptr, 0);
+        }
+        ck_assert_int_eq(bg.width(), 83);
+        for (int c = (w - 12) / 2; c < 83; c++) {
+            int n = 0;
+            for (int r = 5; r < 15; r++)
+                n += bg.mask()[r * 83 + c] != 0;
+            ck_assert_msg(n == 10, "column %d (colour %d): %d of 10 rows foreground", c, colour, n);
+            ck_assert_int_eq(bg.mask()[2 * 83 + c], 0);
+        }
+    }
+}
+END_TEST
+
 // A square that stops: where the model is told a confirmed track stands,
 // it stays foreground; without that, it is absorbed.
 START_TEST(stopped_person_under_a_track_is_not_absorbed)
@@ -301,6 +344,7 @@ int main(int argc, char **argv)
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, moving_square_is_foreground);
+    tcase_add_test(tc, every_column_is_modelled);
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
