@@ -266,14 +266,21 @@ labelled against the ground truth by rule (ALGORITHM.md, "Measures"):
 positive when it matches one person (IoU >= 0.5, or it lies inside one
 person's box and covers at least 40%% of their height), negative when it
 overlaps no one (IoU < 0.1 with every box), left out otherwise (parts of two
-people, groups). Balanced accuracy is the mean of the true positive and true
-negative rates. A blob is a pedestrian when more than half of the regions
-that vote say yes (docs/contour-template.md).
+people, groups). Every ground-truth box counts, also those the MOTChallenge
+scoring ignores (flag 0: PETS09-S2L1's people far off in the top right
+corner, whose blobs were once counted as negatives). Balanced accuracy is the
+mean of the true positive and true negative rates. A blob is a pedestrian
+when more than half of the regions that vote say yes (docs/pixels.md).
 
 """
 RECOGNITION_TAIL = """
-Recall and precision: of the ground-truth boxes, those a kept candidate
-matches (IoU >= 0.5); of the kept candidates, those that match a box.
+Recall and precision: of the ground-truth boxes the scoring considers, those
+a kept candidate matches (IoU >= 0.5); of the kept candidates, those that
+match a box.
+
+`tests/data/blobs/labelled.bin` holds held-out blobs of this run (every
+negative of PETS09-S2L1 frames 401-795 and of TUD-Campus, as many positives);
+`tests/check_background.cc` checks the vote's rates on them.
 """
 
 

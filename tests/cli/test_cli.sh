@@ -110,6 +110,16 @@ else
     else
         bad "candidates file" "$(head -3 "$tmp/cand.txt")"
     fi
+    # Detections verified by the contour template: one vote per detection.
+    expect "verify_detections" 0 "" -- "$ct" -q -p verify_detections=1 -d "$tud/det/det.txt" \
+        -o "$tmp/ver.txt" --candidates "$tmp/vercand.txt" "$tmp/tud.y4m"
+    if [ "$(grep -vc '^#' "$tmp/vercand.txt")" = "$(wc -l < "$tud/det/det.txt")" ]; then
+        ok "verify_detections: a vote per detection"
+    else
+        bad "verify_detections: a vote per detection" "$(grep -vc '^#' "$tmp/vercand.txt") votes"
+    fi
+    expect "verify_detections=2" 2 "config.verify_detections" -- "$ct" -q -p verify_detections=2 \
+        -d "$tud/det/det.txt" "$tmp/tud.y4m"
     expect "pixels only from standard input" 0 "" -- sh -c "'$ct' -q - < '$tmp/tud.y4m' > '$tmp/px2.txt'"
     same "pixels only, file and standard input" "$tmp/px.txt" "$tmp/px2.txt"
 

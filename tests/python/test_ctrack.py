@@ -51,6 +51,8 @@ def test_bad_parameters_raise_with_the_library_message():
     assert e.value.status == -1
     with pytest.raises(ctrack.CtrackError, match="config.candidate_min_score"):
         ctrack.Tracker(candidate_min_score=0.01)
+    with pytest.raises(ctrack.CtrackError, match="config.verify_detections"):
+        ctrack.Tracker(verify_detections=2)
     with pytest.raises(TypeError, match="unknown parameter 'bogus'"):
         ctrack.Tracker(bogus=1)
     with pytest.raises(TypeError):
