@@ -218,4 +218,57 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
     frames_++;
 }
 
+namespace {
+
+// Luma at working pixel (x, y), clamped to the image.
+inline int luma_at(const Planes &img, int w, int h, int x, int y)
+{
+    x = std::min(std::max(x, 0), w - 1);
+    y = std::min(std::max(y, 0), h - 1);
+    return img.y[(size_t)(y * Background::kScale) * img.y_stride + x * Background::kScale];
+}
+
+} // namespace
+
+void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rect &r,
+                               long *frame, long *model) const
+{
+    *frame = *model = 0;
+    const int w = w_, h = h_;
+    auto in = [&](int x, int y) {
+        return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1 && x >= 0 && x < w && y >= 0 &&
+               y < h && blob[(size_t)y * w + x] != 0;
+    };
+    auto m = [&](int x, int y) {
+        x = std::min(std::max(x, 0), w - 1);
+        y = std::min(std::max(y, 0), h - 1);
+        return (int)my_[(size_t)y * w + x];
+    };
+    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h); y++)
+        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w); x++) {
+            if (!in(x, y) || (in(x - 1, y) && in(x + 1, y) && in(x, y - 1) && in(x, y + 1)))
+                continue;
+            *frame += std::abs(luma_at(img, w, h, x + 1, y) - luma_at(img, w, h, x - 1, y)) +
+                      std::abs(luma_at(img, w, h, x, y + 1) - luma_at(img, w, h, x, y - 1));
+            *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
+        }
+}
+
+void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)
+{
+    const int cs = kScale / 2;
+    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h_); y++)
+        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w_); x++) {
+            const size_t i = (size_t)y * w_ + x;
+            if (!blob[i])
+                continue;
+            my_[i] = (uint8_t)luma_at(img, w_, h_, x, y);
+            if (color_) {
+                mu_[i] = img.u[(size_t)(y * cs) * img.u_stride + (size_t)(x * cs) * img.c_step];
+                mv_[i] = img.v[(size_t)(y * cs) * img.v_stride + (size_t)(x * cs) * img.c_step];
+            }
+            mask_[i] = 0;
+        }
+}
+
 } // namespace ctrack

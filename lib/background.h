@@ -29,6 +29,17 @@ public:
     void reset() { frames_ = 0; }
 
     const uint8_t *mask() const { return mask_.data(); }
+
+    // Edge strength along the outline of the blob `blob` (a working-size
+    // mask, non-zero inside) within r: in the frame (`frame`) and in the
+    // model (`model`), sums of |dx| + |dy| of luma over the blob's outline
+    // pixels. A ghost (the model still holds what has left) has its edges
+    // in the model, a real object in the frame.
+    void outline_edges(const Planes &img, const uint8_t *blob, const Rect &r, long *frame,
+                       long *model) const;
+    // Re-learns the pixels of the blob within r at once: the model takes the
+    // frame's values there.
+    void absorb(const Planes &img, const uint8_t *blob, const Rect &r);
     int width() const { return w_; }
     int height() const { return h_; }
     size_t memory_bytes() const;

@@ -120,6 +120,42 @@ START_TEST(every_column_is_modelled)
 }
 END_TEST
 
+// A ghost and a real object: a bright square that stood still long enough
+// to be learnt and then left leaves a blob whose edges are in the model, not
+// in the frame; a square that arrives makes a blob whose edges are in the
+// frame. Absorbing the ghost's blob clears it at once.
+START_TEST(ghosts_have_their_edges_in_the_model)
+{
+    Background bg;
+    Gray g;
+    for (int k = 0; k < 300; k++) { // long enough for the model to learn it
+        g.fill(100);
+        g.square(20, 40, 20, 200);
+        bg.apply(g.planes(), nullptr, 0);
+    }
+    g.fill(100);
+    g.square(100, 40, 20, 200); // it left, and another arrived
+    bg.apply(g.planes(), nullptr, 0);
+    const int s = Background::kScale;
+    std::vector<uint8_t> blob(bg.mask(), bg.mask() + bg.width() * bg.height());
+    const Rect ghost{20 / s, 40 / s, 40 / s, 60 / s}, real{100 / s, 40 / s, 120 / s, 60 / s};
+    ck_assert_int_ge(foreground_in(bg, 20, 40, 40, 60), 90);
+    ck_assert_int_ge(foreground_in(bg, 100, 40, 120, 60), 90);
+    long frame, model;
+    bg.outline_edges(g.planes(), blob.data(), ghost, &frame, &model);
+    ck_assert_msg(model > 2 * frame, "ghost: frame edges %ld, model edges %ld", frame, model);
+    bg.outline_edges(g.planes(), blob.data(), real, &frame, &model);
+    ck_assert_msg(frame > 2 * model, "object: frame edges %ld, model edges %ld", frame, model);
+    bg.absorb(g.planes(), blob.data(), ghost);
+    ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0);
+    g.fill(100);
+    g.square(102, 40, 20, 200);
+    bg.apply(g.planes(), nullptr, 0);
+    ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0); // and stays learnt
+    ck_assert_int_ge(foreground_in(bg, 102, 40, 122, 60), 90);
+}
+END_TEST
+
 // A square that stops: where the model is told a confirmed track stands,
 // it stays foreground; without that, it is absorbed.
 START_TEST(stopped_person_under_a_track_is_not_absorbed)
@@ -345,6 +381,7 @@ int main(int argc, char **argv)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);
+    tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
