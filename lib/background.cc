@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "mask.h"
+
 namespace ctrack {
 
 namespace {
@@ -235,18 +237,16 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
 {
     *frame = *model = 0;
     const int w = w_, h = h_;
-    auto in = [&](int x, int y) {
-        return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1 && x >= 0 && x < w && y >= 0 &&
-               y < h && blob[(size_t)y * w + x] != 0;
-    };
+    const int x0 = std::max(r.x0, 0), y0 = std::max(r.y0, 0);
+    const int x1 = std::min(r.x1, w), y1 = std::min(r.y1, h);
     auto m = [&](int x, int y) {
         x = std::min(std::max(x, 0), w - 1);
         y = std::min(std::max(y, 0), h - 1);
         return (int)my_[(size_t)y * w + x];
     };
-    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h); y++)
-        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w); x++) {
-            if (!in(x, y) || (in(x - 1, y) && in(x + 1, y) && in(x, y - 1) && in(x, y + 1)))
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            if (!on_outline(blob, (size_t)w, x0, y0, x1, y1, x, y))
                 continue;
             *frame += std::abs(luma_at(img, w, h, x + 1, y) - luma_at(img, w, h, x - 1, y)) +
                       std::abs(luma_at(img, w, h, x, y + 1) - luma_at(img, w, h, x, y - 1));

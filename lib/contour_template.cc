@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mask.h"
+
 namespace ctrack {
 
 namespace {
@@ -148,12 +150,9 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     if (w <= 0 || h <= 0)
         return;
     const double centre = (x0 + x1) / 2.0;
-    auto fg = [&](int x, int y) {
-        return x >= x0 && x < x1 && y >= y0 && y < y1 && mask[(size_t)y * stride + x] != 0;
-    };
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
-            if (!fg(x, y) || (fg(x - 1, y) && fg(x + 1, y) && fg(x, y - 1) && fg(x, y + 1)))
+            if (!on_outline(mask, (size_t)stride, x0, y0, x1, y1, x, y))
                 continue;
             int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
             int r = (int)((y + 0.5 - y0) / h * kGrid);
