@@ -37,7 +37,7 @@ ct_config default_config()
     c.appearance_weight = 0.1f;
     c.reid_min_similarity = 0.1f;
     c.reid_max_speed = 1.5f;
-    c.candidate_min_score = 0.7f;
+    c.candidate_min_score = 0.8f;
     c.verify_detections = 0;
     return c;
 }
