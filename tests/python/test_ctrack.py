@@ -201,3 +201,29 @@ def test_pixels_alone_on_real_frames():
         with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
             t.feed(frames[0], [[10, 10, 20, 40, 0.9]], format="i420")
     assert seen > 20
+
+
+def test_verify_detections_on_real_frames():
+    """TUD-Campus's first frames with their public detections, verified by the
+    contour template: one vote per detection, in their order, with their
+    boxes; none for a frame without pixels; a box outside the image abstains."""
+    import subprocess as sp
+    raw = sp.run(["ffmpeg", "-v", "error", "-i", os.path.join(DATA, "TUD-Campus", "video.mp4"),
+                  "-frames:v", "20", "-f", "rawvideo", "-pix_fmt", "yuv420p", "-"],
+                 check=True, capture_output=True).stdout
+    frames = np.frombuffer(raw, np.uint8).reshape(-1, 480 * 3 // 2, 640)
+    det = np.loadtxt(os.path.join(DATA, "TUD-Campus", "det", "det.txt"), delimiter=",")
+    voted = 0
+    with ctrack.Tracker(fps=25, verify_detections=1) as t:
+        for k, f in enumerate(frames):
+            d = det[det[:, 0] == k + 1][:, 2:7]
+            d = np.vstack([d, [[-500, -500, 40, 100, 0.9]]])
+            t.feed(f, d, format="i420")
+            c = t.candidates()
+            assert len(c) == len(d)
+            assert np.allclose(c["left"], d[:, 0]) and np.allclose(c["height"], d[:, 3])
+            assert c["voters"][-1] == 0
+            voted += int(np.sum(c["voters"] >= 5))
+        t.feed(None, det[det[:, 0] == 21][:, 2:7])
+        assert len(t.candidates()) == 0
+    assert voted > 20
