@@ -51,8 +51,9 @@ struct Vote {
     // Eq. (1) per region: the mean distance from the best silhouette's
     // outline points in the region to the blob's outline (nearest-point
     // correspondence), in box heights; negative where the region abstained
-    // (too few of its rows hold foreground).
-    float distance[kRegions];
+    // (too few of its rows hold foreground): all of them when no region
+    // votes.
+    float distance[kRegions] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
     int yes = 0, voters = 0;
     float score = 0;  // yes / voters, 0 with fewer than kMinVoters voters
     int silhouette = -1;

@@ -300,6 +300,13 @@ START_TEST(occluded_regions_abstain)
     ck_assert_int_eq(v.voters, kRegions - 1);
     ck_assert_str_eq(region_name(kLowerLimbs), "lower limbs");
     ck_assert_ptr_null(region_name(kRegions));
+    // No foreground at all: no region votes, and every distance says so.
+    Shape empty = shape_of([](double, double) { return false; });
+    v = classify(empty, default_thresholds());
+    ck_assert_int_eq(v.voters, 0);
+    ck_assert_float_eq(v.score, 0.0f);
+    for (int g = 0; g < kRegions; g++)
+        ck_assert_float_eq(v.distance[g], -1.0f);
 }
 END_TEST
 
