@@ -57,13 +57,13 @@ size_t BlobFinder::memory_bytes() const
            impl_->columns.capacity() * sizeof(int) + impl_->votes.capacity() * sizeof(float);
 }
 
-float BlobFinder::vote(const Rect &r)
+Vote BlobFinder::classify(const Rect &r)
 {
     Impl &m = *impl_;
     const int w = m.clean.cols;
     profile_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.profile);
     outline_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.outline);
-    return classify(m.shape, default_thresholds()).score;
+    return ctrack::classify(m.shape, default_thresholds());
 }
 
 void BlobFinder::clean(const uint8_t *mask, int w, int h)

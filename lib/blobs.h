@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "background.h"
+#include "contour_template.h"
 
 namespace ctrack {
 
@@ -30,11 +31,13 @@ public:
     void clean(const uint8_t *mask, int w, int h);
     // The cleaned mask of the last find() or clean().
     const uint8_t *cleaned() const;
+    // The contour template's vote on the cleaned mask inside r (within the
+    // mask).
+    Vote classify(const Rect &r);
     size_t memory_bytes() const;
 
 private:
-    // The contour template's score of the cleaned mask inside r.
-    float vote(const Rect &r);
+    float vote(const Rect &r) { return classify(r).score; }
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

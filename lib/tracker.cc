@@ -420,9 +420,7 @@ ct_candidate Engine::vote_on(Rect r, float left, float top, float width, float h
             d = -1;
         return c; // outside the image: no voters
     }
-    profile_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.profile);
-    outline_of(blobs_.cleaned(), background_.width(), r.x0, r.y0, r.x1, r.y1, &shape_.outline);
-    const Vote v = classify(shape_, default_thresholds());
+    const Vote v = blobs_.classify(r);
     c.score = v.score;
     c.votes_yes = v.yes;
     c.voters = v.voters;

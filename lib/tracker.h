@@ -159,7 +159,6 @@ private:
     std::vector<Rect> frozen_, predicted_, blob_rects_;
     std::vector<ct_detection> cand_dets_;
     std::vector<ct_candidate> candidates_;
-    Shape shape_; // scratch: 8 KiB, kept off the stack
     std::vector<double> cost_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;
