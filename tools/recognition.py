@@ -31,7 +31,6 @@ docs/recognition.md. The blobs depend on the thresholds (through tracking and
 the merging of fragments), so after --write: make, then --report.
 """
 import argparse
-import configparser
 import datetime
 import os
 import re
@@ -43,7 +42,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from eval import video  # noqa: E402
+from eval import seqinfo, video  # noqa: E402
 
 DATA = os.path.join(TOP, "tests", "data", "mot15")
 REGIONS = ["head", "neck", "shoulders", "chest", "back", "abdomen", "buttocks",
@@ -61,9 +60,7 @@ def iou(a, b):
 
 
 def candidates(build, seq):
-    c = configparser.ConfigParser()
-    c.read(os.path.join(DATA, seq, "seqinfo.ini"))
-    fps = c["Sequence"]["frameRate"]
+    fps = "%g" % seqinfo(seq)["fps"]
     path = os.path.join(build, "recognition-%s.txt" % seq)
     subprocess.run([os.path.join(build, "tools", "ct-track"), "-q", "-r", fps, "-o", os.devnull,
                     "--candidates", path, video(seq)], check=True)
@@ -248,9 +245,8 @@ def shipped_thresholds():
 
 def at_border(c, seq):
     """Candidates touching the image's edge (within 2 pixels)."""
-    cfg = configparser.ConfigParser()
-    cfg.read(os.path.join(DATA, seq, "seqinfo.ini"))
-    w, h = int(cfg["Sequence"]["imWidth"]), int(cfg["Sequence"]["imHeight"])
+    info = seqinfo(seq)
+    w, h = info["width"], info["height"]
     return ((c[:, 1] <= 2) | (c[:, 2] <= 2) | (c[:, 1] + c[:, 3] >= w - 2) |
             (c[:, 2] + c[:, 4] >= h - 2))
 
