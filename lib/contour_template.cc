@@ -116,10 +116,60 @@ const RegionThresholds &default_thresholds()
     return kDefaultThresholds;
 }
 
+namespace {
+
+// Twice the signed area of the triangle o, a, b: positive when o, a, b turn
+// counter-clockwise in axes (first coordinate, second coordinate).
+float cross(const float *o, const float *a, const float *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+// One side of the convex hull of the points (y, x), in order of y (the
+// monotone chain): with sign 1 the side of the smallest x (the hull's left
+// edge at each y), with sign -1 the side of the largest. Returns the number
+// of points kept in out.
+int hull_side(const float (*pts)[2], int n, float sign, float (*out)[2])
+{
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        while (k >= 2 && sign * cross(out[k - 2], out[k - 1], pts[i]) <= 0)
+            k--;
+        out[k][0] = pts[i][0];
+        out[k][1] = pts[i][1];
+        k++;
+    }
+    return k;
+}
+
+// The area between a left and a right chain that both run from the top row
+// to the bottom one (x, y points): twice the polygon's area by the shoelace
+// formula, halved.
+float area_between(const float (*l)[2], int nl, const float (*r)[2], int nr)
+{
+    double a = 0;
+    auto edge = [&](const float *p, const float *q) { a += (double)p[0] * q[1] - (double)q[0] * p[1]; };
+    for (int i = 0; i + 1 < nl; i++)
+        edge(l[i], l[i + 1]);
+    edge(l[nl - 1], r[nr - 1]);
+    for (int i = nr - 1; i > 0; i--)
+        edge(r[i], r[i - 1]);
+    edge(r[0], l[0]);
+    return (float)(std::fabs(a) / 2);
+}
+
+} // namespace
+
 void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Profile *p)
 {
     const int w = x1 - x0, h = y1 - y0;
     const double centre = (x0 + x1) / 2.0;
+    // Each row's foreground as a strip one profile row high: its ends feed
+    // the convex hull, its pixels the area (both in box heights).
+    float left[2 * kRows][2], right[2 * kRows][2];
+    int n = 0;
+    double area = 0;
+    p->fill = 0;
     for (int r = 0; r < kRows; r++) {
         p->edge[r][0] = p->edge[r][1] = Profile::kEmpty;
         if (w <= 0 || h <= 0)
@@ -134,10 +184,35 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         int rr = x1 - 1;
         while (!row[rr])
             rr--;
+        int count = 0;
+        for (int x = l; x <= rr; x++)
+            count += row[x] != 0;
         // Pixel centres, from the box's centre in box heights.
         p->edge[r][0] = (float)((l + 0.5 - centre) / h);
         p->edge[r][1] = (float)((rr + 0.5 - centre) / h);
+        const float xl = (float)((l - centre) / h), xr = (float)((rr + 1 - centre) / h);
+        for (int k = 0; k < 2; k++) {
+            const float yy = (float)(r + k) / kRows;
+            left[n + k][0] = right[n + k][0] = yy;
+            left[n + k][1] = xl;
+            right[n + k][1] = xr;
+        }
+        n += 2;
+        area += (double)count / h / kRows;
     }
+    if (n == 0)
+        return;
+    // The hull: the left chain is convex, the right one concave, as
+    // functions of y.
+    float lh[2 * kRows][2], rh[2 * kRows][2];
+    const int nl = hull_side(left, n, 1, lh), nr = hull_side(right, n, -1, rh);
+    // Back to (x, y) for the area.
+    for (int i = 0; i < nl; i++)
+        std::swap(lh[i][0], lh[i][1]);
+    for (int i = 0; i < nr; i++)
+        std::swap(rh[i][0], rh[i][1]);
+    const float hull = area_between(lh, nl, rh, nr);
+    p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
 }
 
 void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o)
@@ -228,6 +303,7 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
         }
         v.score = v.voters >= kMinVoters ? (float)v.yes / v.voters : 0;
         v.silhouette = s;
+        v.fill = p.fill;
         // The closest silhouette (mean distance over the voting regions)
         // speaks for the library, whatever the thresholds: the distances a
         // blob reports do not depend on them.
@@ -237,6 +313,11 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
             best_total = mean;
         }
     }
+    // A walking person's outline is concave: at the neck, under the arms,
+    // between the legs. A blob that fills its convex hull is no pedestrian,
+    // whatever its regions say.
+    if (best.fill > th.max_fill)
+        best.score = std::min(best.score, 0.5f);
     return best;
 }
 

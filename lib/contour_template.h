@@ -23,6 +23,9 @@ const char *region_name(int r);
 struct Profile {
     static constexpr float kEmpty = -100;
     float edge[kRows][2];
+    // How much of its convex hull the foreground of the profile's rows
+    // fills, from 0 to 1 (0 for an empty box).
+    float fill;
     bool empty(int row) const { return edge[row][0] == kEmpty; }
 };
 
@@ -55,14 +58,21 @@ struct Vote {
     // votes.
     float distance[kRegions] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
     int yes = 0, voters = 0;
-    float score = 0;  // yes / voters, 0 with fewer than kMinVoters voters
+    // yes / voters, 0 with fewer than kMinVoters voters, at most 0.5 (no
+    // pedestrian) when the blob fills more than RegionThresholds::max_fill
+    // of its convex hull.
+    float score = 0;
     int silhouette = -1;
+    float fill = 0;  // Profile::fill
 };
 
 // The thresholds of eq. (1)'s regions: a region votes yes when its distance
 // is at most its threshold.
 struct RegionThresholds {
     float t[kRegions];
+    // The largest part of its convex hull a pedestrian's blob fills (a
+    // walking person's outline is concave).
+    float max_fill;
 };
 const RegionThresholds &default_thresholds();
 

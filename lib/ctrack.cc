@@ -58,18 +58,23 @@ void clear_error(const ct_tracker *t)
 // needed.
 template <typename T>
 int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char *what,
-             void *out, size_t capacity, size_t elem_size, size_t *count)
+             size_t min_size, void *out, size_t capacity, size_t elem_size, size_t *count)
 {
     char *msg = tracker->error;
     const size_t len = sizeof tracker->error;
     if (!count)
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
     *count = 0;
-    if (elem_size < sizeof(T) || elem_size > (1u << 16))
+    if ((elem_size < min_size || elem_size > (1u << 16)) && min_size == sizeof(T))
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                             "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
                             "newer header)",
                             elem_size, what, sizeof(T));
+    if (elem_size < min_size || elem_size > (1u << 16))
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "elem_size: %zu is not sizeof(ct_%s) (%zu, or %zu from an older "
+                            "header, or more from a newer one)",
+                            elem_size, what, sizeof(T), min_size);
     if (capacity > 0 && !out)
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                             "out: NULL with capacity %zu", capacity);
@@ -207,8 +212,8 @@ int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capac
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
     clear_error(tracker);
-    return copy_out(tracker, tracker->engine.reported(), "track", out, capacity, elem_size,
-                    count);
+    return copy_out(tracker, tracker->engine.reported(), "track", sizeof(ct_track), out,
+                    capacity, elem_size, count);
 }
 
 int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out, size_t capacity,
@@ -217,8 +222,9 @@ int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out, size
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
     clear_error(tracker);
-    return copy_out(tracker, tracker->engine.candidates(), "candidate", out, capacity,
-                    elem_size, count);
+    // The first published ct_candidate (0.4.0) ended with region_distance.
+    return copy_out(tracker, tracker->engine.candidates(), "candidate",
+                    offsetof(ct_candidate, fill), out, capacity, elem_size, count);
 }
 
 const char *ct_stage_name(int stage)

@@ -426,6 +426,7 @@ ct_candidate Engine::vote_on(Rect r, float left, float top, float width, float h
     c.voters = v.voters;
     for (int g = 0; g < kRegions; g++)
         c.region_distance[g] = v.distance[g];
+    c.fill = v.fill;
     return c;
 }
 
@@ -477,7 +478,7 @@ void Engine::verify_detections(const Planes &img, const ct_detection *dets, size
         candidates_.push_back(c);
         ct_detection v = d;
         // Rejected: enough regions voted and no majority said pedestrian.
-        if (c.voters >= kMinVoters && 2 * c.votes_yes <= c.voters)
+        if (c.voters >= kMinVoters && c.score <= 0.5f)
             v.score *= c.score;
         cand_dets_.push_back(v);
     }

@@ -264,6 +264,26 @@ Shape shape_of(bool (*inside)(double u, double v))
 
 bool rectangle(double, double) { return true; }
 
+// A person walking, seen from the front: head, neck, shoulders and torso
+// with the arms beside it, the legs apart from the hips down.
+bool walking_person(double u, double v)
+{
+    const double x = std::fabs(u - 0.5);
+    if (v < 0.13)
+        return x * x / 0.01 + (v - 0.065) * (v - 0.065) / 0.0042 <= 1;
+    if (v < 0.16)
+        return x < 0.08;
+    if (v < 0.52) {
+        const bool torso = x < 0.32 - 0.06 * (v - 0.16) / 0.36;
+        const bool arm = x > 0.36 && x < 0.5 - 0.05 * (v - 0.16) / 0.36 && v > 0.18;
+        return torso || arm;
+    }
+    // Two legs, from touching at the hips to apart at the feet.
+    const double t = (v - 0.52) / 0.48;
+    const double inner = 0.02 + 0.16 * t, outer = inner + 0.24;
+    return x > inner && x < outer;
+}
+
 } // namespace
 
 // A silhouette of the library, as a profile, is recognised: every region
@@ -285,6 +305,52 @@ START_TEST(library_silhouettes_are_pedestrians)
     Vote v = classify(p, default_thresholds());
     ck_assert_int_ge(v.voters, kMinVoters);
     ck_assert_msg(v.score > 0.5f, "a person-shaped mask scored %.2f", (double)v.score);
+}
+END_TEST
+
+// How much of its convex hull a shape fills: all of a box; three quarters
+// of the box for an L (the left half of the top half and all of the bottom
+// half), whose hull leaves out one eighth of the box.
+START_TEST(fill_of_the_convex_hull)
+{
+    ck_assert_float_eq_tol(shape_of(rectangle).profile.fill, 1.0f, 1e-6f);
+    const Shape l = shape_of([](double u, double v) { return v >= 0.5 || u < 0.5; });
+    ck_assert_float_eq_tol(l.profile.fill, 0.75f / 0.875f, 0.02f);
+    ck_assert_float_eq(shape_of([](double, double) { return false; }).profile.fill, 0.0f);
+    // A walking person (head, neck, torso with arms, legs apart) fills far
+    // less, and the vote takes them for a pedestrian.
+    const Shape walker = shape_of(walking_person);
+    ck_assert_msg(walker.profile.fill < default_thresholds().max_fill,
+                  "a walking person fills %.2f of the hull", (double)walker.profile.fill);
+    const Vote v = classify(walker, default_thresholds());
+    ck_assert_msg(v.score > 0.5f, "a walking person scored %.2f", (double)v.score);
+}
+END_TEST
+
+// Shapes with a person's aspect that no person has: each fills its convex
+// hull, and the classifier rejects it even where the regions alone would
+// vote for it (a frontal torso is box-like, and six of the nine regions
+// hold torso rows). docs/pixels.md lists the shapes that still pass.
+START_TEST(convex_non_human_shapes_are_rejected)
+{
+    struct {
+        const char *name;
+        bool (*inside)(double, double);
+    } shapes[] = {
+        {"box", rectangle},
+        {"ellipse", [](double u, double v) { return (u - .5) * (u - .5) + (v - .5) * (v - .5) <= .25; }},
+        {"diamond", [](double u, double v) { return std::fabs(u - .5) + std::fabs(v - .5) <= .5; }},
+        {"triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * v; }},
+        {"inverted triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * (1 - v); }},
+    };
+    for (const auto &sh : shapes) {
+        const Shape s = shape_of(sh.inside);
+        const Vote v = classify(s, default_thresholds());
+        ck_assert_msg(v.fill > default_thresholds().max_fill, "%s fills %.2f", sh.name,
+                      (double)v.fill);
+        ck_assert_msg(v.score <= 0.5f, "%s scored %.2f (%d of %d regions)", sh.name,
+                      (double)v.score, v.yes, v.voters);
+    }
 }
 END_TEST
 
@@ -363,13 +429,13 @@ START_TEST(real_blobs_are_classified)
     }
     const char *names[2] = {"PETS09-S2L1 401-795", "TUD-Campus"};
     for (int s = 0; s < 2; s++) {
-        ck_assert_int_ge(n[s][0], 50);
-        ck_assert_int_ge(n[s][1], 50);
+        ck_assert_int_ge(n[s][0], 40);
+        ck_assert_int_ge(n[s][1], 40);
         const double tpr = (double)ok[s][1] / n[s][1], tnr = (double)ok[s][0] / n[s][0];
         std::printf("real blobs, %s: %d people, %d not; accepted %.1f%%, rejected %.1f%%, "
                     "balanced accuracy %.1f%%\n",
                     names[s], n[s][1], n[s][0], 100 * tpr, 100 * tnr, 50 * (tpr + tnr));
-        ck_assert_msg(tpr >= 0.70 && tnr >= 0.60 && tpr + tnr >= 2 * 0.75,
+        ck_assert_msg(tpr >= 0.85 && tnr >= 0.50 && tpr + tnr >= 2 * 0.72,
                       "%s: people accepted %.1f%%, others rejected %.1f%%", names[s],
                       100 * tpr, 100 * tnr);
     }
@@ -394,6 +460,8 @@ int main(int argc, char **argv)
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
     tcase_add_test(tc, fragments_merge_and_groups_split);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
+    tcase_add_test(tc, fill_of_the_convex_hull);
+    tcase_add_test(tc, convex_non_human_shapes_are_rejected);
     tcase_add_test(tc, occluded_regions_abstain);
     tcase_add_test(tc, real_blobs_are_classified);
     suite_add_tcase(s, tc);

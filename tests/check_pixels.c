@@ -355,6 +355,32 @@ START_TEST(pixels_alone)
     ck_assert_int_eq(ct_tracker_get_candidates(t, NULL, 0, sizeof cand[0], &nc),
                      CT_ERROR_BUFFER_TOO_SMALL);
     ck_assert_uint_ge(nc, 1);
+    /* A caller built against a 0.4.0 or 0.5.0 header (ct_candidate ended
+     * with region_distance) gets those fields, packed at its size, and
+     * nothing past them. */
+    {
+        const size_t old = offsetof(ct_candidate, fill);
+        static unsigned char packed[33 * sizeof(ct_candidate)];
+        memset(packed, 0xAB, sizeof packed);
+        ct_candidate now[32];
+        ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, sizeof now[0], &nc), CT_OK);
+        ck_assert_uint_ge(nc, 1);
+        size_t n_old = 0;
+        ck_assert_int_eq(ct_tracker_get_candidates(t, (ct_candidate *)(void *)packed, nc, old,
+                                                   &n_old),
+                         CT_OK);
+        ck_assert_uint_eq(n_old, nc);
+        for (size_t i = 0; i < nc; i++)
+            ck_assert_mem_eq(packed + i * old, &now[i], old);
+        for (size_t i = nc * old; i < sizeof packed; i++)
+            ck_assert_uint_eq(packed[i], 0xAB);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, old - 1, &nc),
+                         CT_ERROR_INVALID_ARGUMENT);
+        ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "older header"));
+        /* The fill is a fraction. */
+        for (size_t i = 0; i < nc; i++)
+            ck_assert(now[i].fill >= 0 && now[i].fill <= 1);
+    }
     ct_tracker_destroy(t);
 
     /* With detections as the source there are no candidates. */

@@ -337,7 +337,7 @@ int main(int argc, char **argv)
             goto done;
         }
         fprintf(cand_out, "# frame,left,top,width,height,score,yes,voters,head,neck,shoulders,"
-                          "chest,back,abdomen,buttocks,upper_limbs,lower_limbs\n");
+                          "chest,back,abdomen,buttocks,upper_limbs,lower_limbs,fill\n");
     }
     out = out_path ? fopen(out_path, "w") : stdout;
     if (!out) {
@@ -438,7 +438,7 @@ int main(int argc, char **argv)
                         c->width, c->height, c->score, (int)c->votes_yes, (int)c->voters);
                 for (int g = 0; g < CT_REGIONS; g++)
                     fprintf(cand_out, ",%.4f", c->region_distance[g]);
-                fputc('\n', cand_out);
+                fprintf(cand_out, ",%.3f\n", c->fill);
             }
         }
         for (size_t i = 0; i < count; i++) {

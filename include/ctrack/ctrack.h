@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 5
+#define CT_VERSION_MINOR 6
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -302,7 +302,9 @@ CT_API int ct_tracker_reset(ct_tracker *tracker);
 typedef struct ct_candidate {
     float left, top, width, height; /* pixels */
     /* The contour template's vote: yes votes over voting regions (0 with
-     * fewer than 5 voters); candidates feed the tracker with this score. */
+     * fewer than 5 voters; at most 0.5, not a pedestrian, when the blob
+     * fills more of its convex hull than a walking person does, 0.6.0);
+     * candidates feed the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,
@@ -310,6 +312,12 @@ typedef struct ct_candidate {
      * box heights, between the blob's contour and the best silhouette's; -1
      * where the region abstained (occluded or out of the frame). */
     float region_distance[CT_REGIONS];
+    /* How much of its convex hull the blob's foreground fills, 0 to 1
+     * (0.6.0): a walking person's outline is concave at the neck, under the
+     * arms and between the legs. Read it only with a 0.6.0 or newer header:
+     * a caller built against an older one passes the smaller size and gets
+     * the fields above. */
+    float fill;
 } ct_candidate;
 
 /* Copies the candidates of the last step, like ct_tracker_get_tracks() (in

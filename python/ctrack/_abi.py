@@ -121,6 +121,7 @@ class Candidate(C.Structure):
         ("votes_yes", C.c_int32),
         ("voters", C.c_int32),
         ("region_distance", C.c_float * REGIONS),
+        ("fill", C.c_float),
     ]
 
 

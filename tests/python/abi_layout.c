@@ -51,6 +51,7 @@ int main(void)
     FIELD(ct_candidate, left); FIELD(ct_candidate, top); FIELD(ct_candidate, width);
     FIELD(ct_candidate, height); FIELD(ct_candidate, score); FIELD(ct_candidate, votes_yes);
     FIELD(ct_candidate, voters); FIELD(ct_candidate, region_distance);
+    FIELD(ct_candidate, fill);
     printf("}}\n");
     return 0;
 }

@@ -196,8 +196,9 @@ def test_pixels_alone_on_real_frames():
             c = t.candidates()
             seen += len(c)
             assert set(c.dtype.names) >= {"left", "score", "votes_yes", "voters",
-                                          "region_distance"}
+                                          "region_distance", "fill"}
             assert np.all((c["score"] >= 0) & (c["score"] <= 1))
+            assert np.all((c["fill"] >= 0) & (c["fill"] <= 1))
         with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
             t.feed(frames[0], [[10, 10, 20, 40, 0.9]], format="i420")
     assert seen > 20
