@@ -201,10 +201,12 @@ def choose_size_filter(box, lab):
     return best[1]
 
 
-def recall_precision(cands, pred, seq):
-    """Candidates the vote keeps against the ground truth (IoU >= 0.5): recall
-    of the boxes the scoring considers, precision against every box."""
+def recall_precision(cands, pred, seq, first, last):
+    """Candidates the vote keeps against the ground truth (IoU >= 0.5) in
+    frames first..last: recall of the boxes the scoring considers, precision
+    against every box."""
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
+    gt = gt[(gt[:, 0] >= first) & (gt[:, 0] <= last)]
     found, kept_ok = 0, 0
     kept = cands[pred]
     for f in np.unique(gt[:, 0]):
@@ -293,10 +295,12 @@ def main():
     size = choose_size_filter(pc[train][:, 1:5], pl[train])
     rows = []
     parts = [("PETS09-S2L1 frames 1-400 (thresholds chosen on these)", pc[train], pl[train],
-              "PETS09-S2L1"),
-             ("PETS09-S2L1 frames 401-795", pc[~train], pl[~train], "PETS09-S2L1"),
-             ("TUD-Campus", sets["TUD-Campus"][0], sets["TUD-Campus"][1], "TUD-Campus")]
-    for name, c, l, seq in parts:
+              "PETS09-S2L1", (1, 400)),
+             ("PETS09-S2L1 frames 401-795", pc[~train], pl[~train], "PETS09-S2L1",
+              (401, seqinfo("PETS09-S2L1")["frames"])),
+             ("TUD-Campus", sets["TUD-Campus"][0], sets["TUD-Campus"][1], "TUD-Campus",
+              (1, seqinfo("TUD-Campus")["frames"]))]
+    for name, c, l, seq, frames in parts:
         keep = l >= 0
         inner = keep & ~at_border(c, seq)
         v = c[:, 5] > 0.5  # the library's own vote: more than half the voters say yes
@@ -304,7 +308,7 @@ def main():
         regions_alone = votes(c[:, 8:17], shipped)  # without the convex hull's check
         rows.append((name, (l == 1).sum(), (l == 0).sum(), (l == -1).sum(),
                      balanced(v[keep], l[keep]), balanced(s[keep], l[keep]),
-                     recall_precision(c, v, seq), balanced(v[inner], l[inner]),
+                     recall_precision(c, v, seq, *frames), balanced(v[inner], l[inner]),
                      balanced((votes(c[:, 8:17], th) & (c[:, 17] <= max_fill))[keep], l[keep]),
                      balanced(regions_alone[keep], l[keep])))
     print("thresholds in use:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)),
