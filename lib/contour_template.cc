@@ -142,13 +142,15 @@ int hull_side(const float (*pts)[2], int n, float sign, float (*out)[2])
     return k;
 }
 
-// The area between a left and a right chain that both run from the top row
-// to the bottom one (x, y points): twice the polygon's area by the shoelace
-// formula, halved.
+// The area of the polygon that runs down one chain and back up the other
+// (both from the top row to the bottom one), by the shoelace formula; the
+// order of the two coordinates does not matter.
 float area_between(const float (*l)[2], int nl, const float (*r)[2], int nr)
 {
     double a = 0;
-    auto edge = [&](const float *p, const float *q) { a += (double)p[0] * q[1] - (double)q[0] * p[1]; };
+    auto edge = [&](const float *p, const float *q) {
+        a += (double)p[0] * q[1] - (double)q[0] * p[1];
+    };
     for (int i = 0; i + 1 < nl; i++)
         edge(l[i], l[i + 1]);
     edge(l[nl - 1], r[nr - 1]);
@@ -202,15 +204,10 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     }
     if (n == 0)
         return;
-    // The hull: the left chain is convex, the right one concave, as
-    // functions of y.
+    // The hull's left side is a convex function of y, its right side a
+    // concave one.
     float lh[2 * kRows][2], rh[2 * kRows][2];
     const int nl = hull_side(left, n, 1, lh), nr = hull_side(right, n, -1, rh);
-    // Back to (x, y) for the area.
-    for (int i = 0; i < nl; i++)
-        std::swap(lh[i][0], lh[i][1]);
-    for (int i = 0; i < nr; i++)
-        std::swap(rh[i][0], rh[i][1]);
     const float hull = area_between(lh, nl, rh, nr);
     p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
 }

@@ -164,11 +164,14 @@ def choose_max_fill(dist, fill, th, lab):
     v = votes(dist, th)
     k = lab >= 0
     best, best_f = -1, 1.0
-    for f in np.arange(0.75, 1.0001, 0.025):
+    for f in FILL_BOUNDS:
         b = balanced((v & (fill <= f))[k], lab[k])[0]
         if b > best + 1e-12:
             best, best_f = b, f
     return best_f
+
+
+FILL_BOUNDS = np.round(np.arange(0.75, 1.0001, 0.025), 3)
 
 
 def choose_thresholds(dist, lab):
@@ -359,6 +362,17 @@ def main():
                 "at least %d pixels.\n"
                 % (", ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)), shipped_fill,
                    ", ".join("%.3f" % t for t in th), max_fill, *size))
+        f.write("\nThe bound on the fill, against the vote's balanced accuracy with the "
+                "thresholds in use (chosen on frames 1-400; 1.000 turns the test off):\n\n")
+        f.write("| fill at most | " + " | ".join(r[0] for r in rows) + " |\n")
+        f.write("|---|" + "---|" * len(rows) + "\n")
+        for bound in FILL_BOUNDS:
+            cells = []
+            for _, c, l, _, _ in parts:
+                k = l >= 0
+                pred = votes(c[:, 8:17], shipped) & (c[:, 17] <= bound)
+                cells.append("%.1f%%" % (100 * balanced(pred[k], l[k])[0]))
+            f.write("| %.3f | %s |\n" % (bound, " | ".join(cells)))
         f.write(RECOGNITION_TAIL)
         if picture:
             f.write(RECOGNITION_PICTURE)
