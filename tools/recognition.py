@@ -233,7 +233,7 @@ def picture_of_false_positives(cands, lab, accepted, seq, path, first=401, n=18)
     w, h, _, frames = open_y4m(video(seq))
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
     idx = np.flatnonzero(accepted & (lab == 0) & (cands[:, 0] >= first))
-    idx = idx[np.linspace(0, len(idx) - 1, min(n, len(idx))).astype(int)] if len(idx) else idx
+    idx = evenly(idx, n)
     tiles = []
     for i in idx:
         f, x, y, bw, bh = (int(v) for v in cands[i, :5])
@@ -250,12 +250,23 @@ def picture_of_false_positives(cands, lab, accepted, seq, path, first=401, n=18)
         cv2.putText(crop, "frame %d" % f, (4, 14), cv2.FONT_HERSHEY_SIMPLEX, 0.45,
                     (0, 255, 255), 1)
         tiles.append(crop)
+    return write_sheet(tiles, 6, path, [cv2.IMWRITE_JPEG_QUALITY, 85])
+
+
+def evenly(idx, n):
+    """At most n of the indices idx, evenly spread."""
+    return idx[np.linspace(0, len(idx) - 1, min(n, len(idx))).astype(int)] if len(idx) else idx
+
+
+def write_sheet(tiles, per_row, path, params=()):
+    """The tiles (images of one size) in rows of per_row, written to path;
+    False when there are none."""
+    import cv2
     if not tiles:
         return False
-    while len(tiles) % 6:
-        tiles.append(np.zeros_like(tiles[0]))
-    sheet = np.vstack([np.hstack(tiles[k:k + 6]) for k in range(0, len(tiles), 6)])
-    cv2.imwrite(path, sheet, [cv2.IMWRITE_JPEG_QUALITY, 85])
+    tiles = tiles + [np.zeros_like(tiles[0])] * (-len(tiles) % per_row)
+    rows = [np.hstack(tiles[k:k + per_row]) for k in range(0, len(tiles), per_row)]
+    cv2.imwrite(path, np.vstack(rows), list(params))
     return True
 
 
@@ -268,14 +279,14 @@ def picture_of_fill_rejections(build, sets, regions_vote, path, n=24):
     tiles = []
     for seq, first in (("PETS09-S2L1", 401), ("TUD-Campus", 1)):
         c, lab = sets[seq]
-        idx = np.flatnonzero(regions_vote[seq] & (c[:, 5] <= 0.5) & (c[:, 0] >= first))
+        idx = evenly(np.flatnonzero(regions_vote[seq] & (c[:, 5] <= 0.5) & (c[:, 0] >= first)),
+                     n // 2)
         if not len(idx):
             continue
-        idx = idx[np.linspace(0, len(idx) - 1, min(n // 2, len(idx))).astype(int)]
         masks = blob_masks(build, seq, c)
         for i in idx:
             m = masks[i][5]
-            scale = 112.0 / max(m.shape)
+            scale = min(112.0 / m.shape[0], 72.0 / m.shape[1])
             size = (max(1, int(m.shape[1] * scale)), max(1, int(m.shape[0] * scale)))
             big = cv2.resize((m != 0).astype(np.uint8) * 255, size,
                              interpolation=cv2.INTER_NEAREST)
@@ -289,13 +300,7 @@ def picture_of_fill_rejections(build, sets, regions_vote, path, n=24):
             cv2.putText(tile, "%.2f" % c[i, 17], (4, 124), cv2.FONT_HERSHEY_SIMPLEX, 0.4,
                         (0, 255, 255), 1)
             tiles.append(tile)
-    if not tiles:
-        return False
-    while len(tiles) % 12:
-        tiles.append(np.zeros_like(tiles[0]))
-    sheet = np.vstack([np.hstack(tiles[k:k + 12]) for k in range(0, len(tiles), 12)])
-    cv2.imwrite(path, sheet)
-    return True
+    return write_sheet(tiles, 12, path)
 
 
 def shipped_thresholds():
