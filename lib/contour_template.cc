@@ -300,7 +300,6 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
         }
         v.score = v.voters >= kMinVoters ? (float)v.yes / v.voters : 0;
         v.silhouette = s;
-        v.fill = p.fill;
         // The closest silhouette (mean distance over the voting regions)
         // speaks for the library, whatever the thresholds: the distances a
         // blob reports do not depend on them.
@@ -313,6 +312,7 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
     // A walking person's outline is concave: at the neck, under the arms,
     // between the legs. A blob that fills its convex hull is no pedestrian,
     // whatever its regions say.
+    best.fill = p.fill;
     if (best.fill > th.max_fill)
         best.score = std::min(best.score, 0.5f);
     return best;

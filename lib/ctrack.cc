@@ -54,8 +54,9 @@ void clear_error(const ct_tracker *t)
 }
 
 // Copies items into the caller's array of elements of elem_size bytes (at
-// least sizeof(T); a larger element's tail is zeroed), or reports the count
-// needed.
+// least min_size, the first published sizeof(T): an older header's element
+// gets the fields it has, a larger element's tail is zeroed), or reports the
+// count needed.
 template <typename T>
 int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char *what,
              size_t min_size, void *out, size_t capacity, size_t elem_size, size_t *count)
@@ -65,16 +66,17 @@ int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char 
     if (!count)
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
     *count = 0;
-    if ((elem_size < min_size || elem_size > (1u << 16)) && min_size == sizeof(T))
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                            "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
-                            "newer header)",
-                            elem_size, what, sizeof(T));
-    if (elem_size < min_size || elem_size > (1u << 16))
+    if (elem_size < min_size || elem_size > (1u << 16)) {
+        if (min_size == sizeof(T)) // never grown
+            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
+                                "newer header)",
+                                elem_size, what, sizeof(T));
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                             "elem_size: %zu is not sizeof(ct_%s) (%zu, or %zu from an older "
                             "header, or more from a newer one)",
                             elem_size, what, sizeof(T), min_size);
+    }
     if (capacity > 0 && !out)
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                             "out: NULL with capacity %zu", capacity);

@@ -370,16 +370,16 @@ START_TEST(pixels_alone)
                                                    &n_old),
                          CT_OK);
         ck_assert_uint_eq(n_old, nc);
-        for (size_t i = 0; i < nc; i++)
+        for (size_t i = 0; i < nc; i++) {
             ck_assert_mem_eq(packed + i * old, &now[i], old);
+            /* The fill is a fraction, and a blob has some. */
+            ck_assert(now[i].fill > 0 && now[i].fill <= 1);
+        }
         for (size_t i = nc * old; i < sizeof packed; i++)
             ck_assert_uint_eq(packed[i], 0xAB);
-        ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, old - 1, &nc),
+        ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, old - 1, &n_old),
                          CT_ERROR_INVALID_ARGUMENT);
         ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "older header"));
-        /* The fill is a fraction. */
-        for (size_t i = 0; i < nc; i++)
-            ck_assert(now[i].fill >= 0 && now[i].fill <= 1);
     }
     ct_tracker_destroy(t);
 
