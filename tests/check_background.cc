@@ -338,7 +338,8 @@ START_TEST(convex_non_human_shapes_are_rejected)
         bool (*inside)(double, double);
     } shapes[] = {
         {"box", rectangle},
-        {"ellipse", [](double u, double v) { return (u - .5) * (u - .5) + (v - .5) * (v - .5) <= .25; }},
+        {"ellipse",
+         [](double u, double v) { return (u - .5) * (u - .5) + (v - .5) * (v - .5) <= .25; }},
         {"diamond", [](double u, double v) { return std::fabs(u - .5) + std::fabs(v - .5) <= .5; }},
         {"triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * v; }},
         {"inverted triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * (1 - v); }},
