@@ -144,12 +144,13 @@ def main():
 
     # 2. Peers on the same detections, in this run.
     dets = load_dets("PETS09-S2L1")
-    _, bt = peers.bytetrack(dets, 795, 7)
-    _, nf = peers.norfair_iou(dets, 795, 7)
     lib = {r["name"]: r for r in report["library"]["runs"]}
     us = lib["detections 768x576"]["us_per_frame"]
-    peers_us = {"ByteTrack (supervision 0.30.9)": 1e6 * bt / 795,
-                "norfair 2.3.0 (IoU)": 1e6 * nf / 795}
+    peers_us = {name: 1e6 * run(dets, 795, 7)[1] / 795 for name, run in (
+        ("ByteTrack (supervision 0.30.9)", peers.bytetrack),
+        ("SORT (trackers 2.6.1)", peers.sort),
+        ("OC-SORT (trackers 2.6.1)", peers.ocsort),
+        ("norfair 2.3.0 (IoU)", peers.norfair_iou))}
     report["peers_us_per_frame"] = peers_us
     say("")
     say("## Against the peers, same detections (PETS09-S2L1, 768x576), same run")

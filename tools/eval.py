@@ -122,9 +122,15 @@ TRACKERS = [
      "detections + pixels"),
     ("ctrack-pix", "ctrack", "pixels"),
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections"),
+    ("sort", "SORT (trackers 2.6.1)", "detections"),
+    ("ocsort", "OC-SORT (trackers 2.6.1)", "detections"),
     ("norfair", "norfair 2.3.0 (IoU)", "detections"),
     ("mog2-iou", "OpenCV MOG2 + blobs + IoU tracker", "pixels"),
 ]
+
+
+PEERS_ON_DETECTIONS = {"bytetrack": peers.bytetrack, "sort": peers.sort, "ocsort": peers.ocsort,
+                       "norfair": peers.norfair_iou}
 
 
 def main():
@@ -160,11 +166,8 @@ def main():
             elif key == "ctrack-detpix-noapp":
                 seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
                                      params=["appearance=0"])
-            elif key == "bytetrack":
-                rows, seconds = peers.bytetrack(dets, n, fps)
-                write_rows(path, rows)
-            elif key == "norfair":
-                rows, seconds = peers.norfair_iou(dets, n, fps)
+            elif key in PEERS_ON_DETECTIONS:
+                rows, seconds = PEERS_ON_DETECTIONS[key](dets, n, fps)
                 write_rows(path, rows)
             else:
                 rows, seconds = peers.mog2_iou(y4m, n)
@@ -193,7 +196,8 @@ def write_report(out, results, seqs, worst):
     import matplotlib.pyplot as plt
 
     os.makedirs(os.path.join(out, "img"), exist_ok=True)
-    fig, axes = plt.subplots(1, len(seqs), figsize=(7 * len(seqs), 4.4), sharey=True)
+    # One sequence a row, so that every tracker's label has room.
+    fig, axes = plt.subplots(len(seqs), 1, figsize=(12, 4.6 * len(seqs)), sharey=True)
     measures = ["HOTA", "MOTA", "IDF1"]
     for ax, seq in zip(axes, seqs):
         rows = [r for r in results if r["sequence"] == seq]
@@ -203,12 +207,13 @@ def write_report(out, results, seqs, worst):
             # the rest; the labels give the true values.
             bars = ax.bar(x + (i - 1) * 0.27, [max(r[m], -20) for r in rows], 0.27, label=m)
             ax.bar_label(bars, labels=["%.0f" % r[m] for r in rows], fontsize=7)
-        ax.set_xticks(x, ["%s\n(%s)" % (r["tracker"].split(" (")[0].replace(" + ", "+\n")
-                                        .replace(", ", ",\n"), r["input"]) for r in rows],
-                      fontsize=6)
+        ax.set_xticks(x, ["%s\n(%s)" % (r["tracker"].split(" (")[0], r["input"])
+                          for r in rows], fontsize=7, rotation=25, ha="right",
+                      rotation_mode="anchor")
         ax.set_title(seq)
         ax.axhline(0, color="black", linewidth=0.5)
-    axes[0].set_ylabel("score (%)")
+    for ax in axes:
+        ax.set_ylabel("score (%)")
     axes[0].legend(loc="upper right", fontsize=8)
     fig.suptitle("ctrack and its peers, MOTChallenge 2015 public detections (online)")
     fig.tight_layout()
@@ -264,15 +269,17 @@ NOTES = """## Notes
   each detection's box, and a detection it rejects can no longer start a track
   (docs/pixels.md). An option, off by default.
 - **Peers.** ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
-  to the sequence's); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
+  to the sequence's); SORT and OC-SORT as Roboflow's trackers 2.6.1 ships them
+  (defaults, `frame_rate` set to the sequence's; boxes reported once a track is
+  confirmed); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
   baseline is OpenCV's MOG2 (defaults, shadows dropped), a 3x3 opening and a 7x7
   closing, contours of at least 400 pixels as boxes, and an IoU tracker (IoU >= 0.3,
   3 hits to confirm, 3 frames kept). `tools/peers.py` has them.
 - **Barycenter error** (the paper's measure, ALGORITHM.md): over the matched pairs,
   the distance between the track's and the ground truth's box centres divided by the
   ground-truth box height.
-- **Feature recognition accuracy** (the paper's third measure) needs the contour
-  classifier, which does not exist yet.
+- **Feature recognition accuracy** (the paper's third measure) is in
+  docs/recognition.md (`tools/recognition.py`).
 """
 
 

@@ -4,6 +4,8 @@ make eval and make bench. Each returns MOTChallenge rows
 (reading the input excluded).
 
 - ByteTrack as supervision 0.30.9 ships it, default thresholds.
+- SORT and OC-SORT as Roboflow's trackers 2.6.1 ships them, default
+  parameters (frame_rate set to the sequence's).
 - norfair 2.3.0 with IoU distance (threshold 0.7, its documented value for
   boxes), otherwise default.
 - The pixels-only baseline: OpenCV's MOG2 background subtractor (default
@@ -23,11 +25,10 @@ def _xyxy(d):
     return np.column_stack([d[:, 0], d[:, 1], d[:, 0] + d[:, 2], d[:, 1] + d[:, 3]])
 
 
-def bytetrack(dets_by_frame, n_frames, fps):
+def _supervision_loop(update, dets_by_frame, n_frames):
+    """Feeds each frame's detections to update (supervision Detections in and
+    out) and keeps the boxes it gives an id (-1: not yet confirmed)."""
     import supervision as sv
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", FutureWarning)  # "removed in 0.31": we pin 0.30.9
-        tracker = sv.ByteTrack(frame_rate=fps)
     rows, spent = [], 0.0
     for k in range(1, n_frames + 1):
         d = dets_by_frame.get(k, np.zeros((0, 5)))
@@ -35,11 +36,30 @@ def bytetrack(dets_by_frame, n_frames, fps):
                             confidence=d[:, 4].astype(np.float32),
                             class_id=np.zeros(len(d), dtype=int))
         t0 = time.perf_counter()
-        out = tracker.update_with_detections(det)
+        out = update(det)
         spent += time.perf_counter() - t0
         for (x0, y0, x1, y1), tid in zip(out.xyxy, out.tracker_id):
-            rows.append((k, int(tid), x0, y0, x1 - x0, y1 - y0))
+            if tid >= 0:
+                rows.append((k, int(tid), x0, y0, x1 - x0, y1 - y0))
     return rows, spent
+
+
+def bytetrack(dets_by_frame, n_frames, fps):
+    import supervision as sv
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FutureWarning)  # "removed in 0.31": we pin 0.30.9
+        tracker = sv.ByteTrack(frame_rate=fps)
+    return _supervision_loop(tracker.update_with_detections, dets_by_frame, n_frames)
+
+
+def sort(dets_by_frame, n_frames, fps):
+    from trackers import SORTTracker
+    return _supervision_loop(SORTTracker(frame_rate=fps).update, dets_by_frame, n_frames)
+
+
+def ocsort(dets_by_frame, n_frames, fps):
+    from trackers import OCSORTTracker
+    return _supervision_loop(OCSORTTracker(frame_rate=fps).update, dets_by_frame, n_frames)
 
 
 def norfair_iou(dets_by_frame, n_frames, fps):
