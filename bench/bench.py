@@ -92,6 +92,38 @@ def mog2_ms(y4m, frames):
     return 1e3 * spent / n
 
 
+def opencv_follow_us(y4m, kind, people=10, frames=50):
+    """OpenCV's single-object trackers following one person: microseconds per
+    update() on one thread. Each of the first `people` PETS09-S2L1
+    ground-truth people seen in at least `frames` frames is taken from its
+    first box, then followed over its next `frames` frames (init() not
+    counted)."""
+    import cv2
+    cv2.setNumThreads(1)
+    make = {"KCF": cv2.TrackerKCF_create, "CSRT": cv2.TrackerCSRT_create,
+            "MIL": cv2.TrackerMIL_create}[kind]
+    w, h, _, rows = open_y4m(y4m)
+    gt = np.loadtxt(os.path.join(DATA, "PETS09-S2L1", "gt", "gt.txt"), delimiter=",")
+    spent, n = 0.0, 0
+    for pid in [i for i in np.unique(gt[:, 1]) if (gt[:, 1] == i).sum() > frames][:people]:
+        track = gt[gt[:, 1] == pid]
+        first = int(track[:, 0].min())
+
+        def bgr(k):
+            return cv2.cvtColor(np.asarray(rows[k - 1]).reshape(h * 3 // 2, w),
+                                cv2.COLOR_YUV2BGR_I420)
+        box = track[track[:, 0] == first][0, 2:6]
+        t = make()
+        t.init(bgr(first), tuple(int(round(v)) for v in box))
+        for k in range(first + 1, first + 1 + frames):
+            img = bgr(k)
+            t0 = time.perf_counter()
+            t.update(img)
+            spent += time.perf_counter() - t0
+            n += 1
+    return 1e6 * spent / n
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
@@ -201,6 +233,27 @@ def main():
     say("Mean shift per person: the library's mean shift stage (model learning, refining "
         "the prediction, following and scale) divided by the confirmed tracks it served, "
         "from `ct-track --stats` in the same runs.")
+
+    # 3b. Following one person: OpenCV's single-object trackers beside mean
+    # shift (opencv-contrib-python in the eval venv).
+    ms_us = whole["768x576"]["mean_shift_us_per_person"]
+    follow_frames = 20 if a.quick else 50
+    follow = {kind: opencv_follow_us(pets, kind, frames=follow_frames)
+              for kind in ("KCF", "CSRT", "MIL")}
+    report["follow_one_person_us"] = dict(follow, ctrack_mean_shift=ms_us)
+    say("")
+    say("## Following one person: OpenCV's trackers beside ctrack's mean shift (768x576)")
+    say("")
+    say("OpenCV 4.10's single-object trackers, `update()` on one thread, following each of "
+        "the first 10 PETS09-S2L1 ground-truth people for %d frames from their first box "
+        "(`init()` not counted); ctrack's mean shift per person per frame from the run "
+        "above." % follow_frames)
+    say("")
+    say("| follower | us per person per frame | ctrack's mean shift is faster by |")
+    say("|---|---|---|")
+    say("| ctrack mean shift | %.1f | 1.0x |" % ms_us)
+    for kind, us_ in follow.items():
+        say("| OpenCV %s | %.0f | %.0fx |" % (kind, us_, us_ / ms_us))
 
     # 4. Memory and allocations.
     r = lib["detections 768x576"]
