@@ -103,15 +103,15 @@ def opencv_follow_us(y4m, kind, people=10, frames=50):
     make = {"KCF": cv2.TrackerKCF_create, "CSRT": cv2.TrackerCSRT_create,
             "MIL": cv2.TrackerMIL_create}[kind]
     w, h, _, rows = open_y4m(y4m)
+
+    def bgr(k):
+        return cv2.cvtColor(np.asarray(rows[k - 1]).reshape(h * 3 // 2, w),
+                            cv2.COLOR_YUV2BGR_I420)
     gt = np.loadtxt(os.path.join(DATA, "PETS09-S2L1", "gt", "gt.txt"), delimiter=",")
     spent, n = 0.0, 0
     for pid in [i for i in np.unique(gt[:, 1]) if (gt[:, 1] == i).sum() > frames][:people]:
         track = gt[gt[:, 1] == pid]
         first = int(track[:, 0].min())
-
-        def bgr(k):
-            return cv2.cvtColor(np.asarray(rows[k - 1]).reshape(h * 3 // 2, w),
-                                cv2.COLOR_YUV2BGR_I420)
         box = track[track[:, 0] == first][0, 2:6]
         t = make()
         t.init(bgr(first), tuple(int(round(v)) for v in box))
