@@ -131,12 +131,13 @@ def label(cands, seq):
             labels[i] = 0
             continue
         o, inter = iou(box, boxes)
+        held = inter / (box[2] * box[3])  # the part of the blob each box holds
         if o.max() >= 0.5:
             labels[i] = 1
-        elif o.max() < 0.1 and (inter / (box[2] * box[3])).max() < 0.1:
+        elif o.max() < 0.1 and held.max() < 0.1:
             labels[i] = 0
         else:
-            inside = inter / (box[2] * box[3]) >= 0.8
+            inside = held >= 0.8
             tall = box[3] >= 0.4 * boxes[:, 3]
             labels[i] = 1 if np.sum(inside & tall) == 1 else -1
     return labels
@@ -347,17 +348,18 @@ def main():
               (401, seqinfo("PETS09-S2L1")["frames"])),
              ("TUD-Campus", sets["TUD-Campus"][0], sets["TUD-Campus"][1], "TUD-Campus",
               (1, seqinfo("TUD-Campus")["frames"]))]
+    alone = []  # each part's vote of the regions alone, without the convex hull's check
     for name, c, l, seq, frames in parts:
         keep = l >= 0
         inner = keep & ~at_border(c, seq)
         v = c[:, 5] > 0.5  # the library's own vote: more than half the voters say yes
         s = size_filter(c[:, 1:5], *size)
-        regions_alone = votes(c[:, 8:17], shipped)  # without the convex hull's check
+        alone.append(votes(c[:, 8:17], shipped))
         rows.append((name, (l == 1).sum(), (l == 0).sum(), (l == -1).sum(),
                      balanced(v[keep], l[keep]), balanced(s[keep], l[keep]),
                      recall_precision(c, v, seq, *frames), balanced(v[inner], l[inner]),
                      balanced((votes(c[:, 8:17], th) & (c[:, 17] <= max_fill))[keep], l[keep]),
-                     balanced(regions_alone[keep], l[keep])))
+                     balanced(alone[-1][keep], l[keep])))
     print("thresholds in use:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)),
           "fill %.3f" % shipped_fill)
     print("thresholds chosen now:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, th)),
@@ -415,9 +417,9 @@ def main():
         f.write("|---|" + "---|" * len(rows) + "\n")
         for bound in FILL_BOUNDS:
             cells = []
-            for _, c, l, _, _ in parts:
+            for (_, c, l, _, _), regions in zip(parts, alone):
                 k = l >= 0
-                pred = votes(c[:, 8:17], shipped) & (c[:, 17] <= bound)
+                pred = regions & (c[:, 17] <= bound)
                 cells.append("%.1f%%" % (100 * balanced(pred[k], l[k])[0]))
             f.write("| %.3f | %s |\n" % (bound, " | ".join(cells)))
         if fill_picture:
