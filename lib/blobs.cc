@@ -53,16 +53,17 @@ const uint8_t *BlobFinder::cleaned() const
 
 size_t BlobFinder::memory_bytes() const
 {
-    return impl_->clean.total() + impl_->tmp.total() + impl_->blobs.capacity() * sizeof(Rect) +
-           impl_->columns.capacity() * sizeof(int) + impl_->votes.capacity() * sizeof(float);
+    const Impl &m = *impl_;
+    return m.clean.total() + m.tmp.total() + m.blobs.capacity() * sizeof(Rect) +
+           m.columns.capacity() * sizeof(int) + m.votes.capacity() * sizeof(float) +
+           m.shape.cells.capacity() + m.shape.todo.capacity() * sizeof(int);
 }
 
 Vote BlobFinder::classify(const Rect &r)
 {
     Impl &m = *impl_;
     const int w = m.clean.cols;
-    profile_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.profile);
-    outline_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape.outline);
+    shape_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape);
     return ctrack::classify(m.shape, default_thresholds());
 }
 

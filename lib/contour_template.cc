@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "mask.h"
 
@@ -160,10 +161,53 @@ float area_between(const float (*l)[2], int nl, const float (*r)[2], int nr)
     return (float)(std::fabs(a) / 2);
 }
 
-} // namespace
+enum Cell : uint8_t { kHole = 0, kForeground = 1, kOutside = 2 };
 
-void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Profile *p)
+// Marks each pixel of the box [x0, x1) x [y0, y1): foreground, background
+// that the box's border reaches through background (4-connected), or hole.
+void mark_cells(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
 {
+    const int w = x1 - x0, h = y1 - y0;
+    s->cells.resize((size_t)w * h);
+    uint8_t *c = s->cells.data();
+    for (int y = 0; y < h; y++) {
+        const uint8_t *row = mask + (size_t)(y0 + y) * stride + x0;
+        for (int x = 0; x < w; x++)
+            c[(size_t)y * w + x] = row[x] ? kForeground : kHole;
+    }
+    std::vector<int> &todo = s->todo;
+    todo.clear();
+    auto reach = [&](int x, int y) {
+        const size_t i = (size_t)y * w + x;
+        if (c[i] == kHole) {
+            c[i] = kOutside;
+            todo.push_back((int)i);
+        }
+    };
+    for (int x = 0; x < w; x++) {
+        reach(x, 0);
+        reach(x, h - 1);
+    }
+    for (int y = 0; y < h; y++) {
+        reach(0, y);
+        reach(w - 1, y);
+    }
+    while (!todo.empty()) {
+        const int i = todo.back();
+        todo.pop_back();
+        const int x = i % w, y = i / w;
+        if (x > 0) reach(x - 1, y);
+        if (x + 1 < w) reach(x + 1, y);
+        if (y > 0) reach(x, y - 1);
+        if (y + 1 < h) reach(x, y + 1);
+    }
+}
+
+// The profile of the foreground inside the box, whose cells mark_cells()
+// marked in s->cells.
+void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
+{
+    Profile *p = &s->profile;
     const int w = x1 - x0, h = y1 - y0;
     const double centre = (x0 + x1) / 2.0;
     // Each row's foreground as a strip one profile row high: its ends feed
@@ -186,9 +230,11 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         int rr = x1 - 1;
         while (!row[rr])
             rr--;
+        // The area inside the outer contour: foreground and holes.
+        const uint8_t *cells = s->cells.data() + (size_t)(y - y0) * w - x0;
         int count = 0;
         for (int x = l; x <= rr; x++)
-            count += row[x] != 0;
+            count += cells[x] != kOutside;
         // Pixel centres, from the box's centre in box heights.
         p->edge[r][0] = (float)((l + 0.5 - centre) / h);
         p->edge[r][1] = (float)((rr + 0.5 - centre) / h);
@@ -212,6 +258,7 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
 }
 
+// The outline's distance map of the foreground inside the box.
 void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o)
 {
     const int kFar = 60000;
@@ -254,6 +301,16 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
             }
             o->dist[r][c] = (uint16_t)d;
         }
+}
+
+} // namespace
+
+void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
+{
+    if (x1 > x0 && y1 > y0)
+        mark_cells(mask, stride, x0, y0, x1, y1, s);
+    profile_of(mask, stride, x0, y0, x1, y1, s);
+    outline_of(mask, stride, x0, y0, x1, y1, &s->outline);
 }
 
 Vote classify(const Shape &shape, const RegionThresholds &th)

@@ -4,6 +4,7 @@
 #define CTRACK_CONTOUR_TEMPLATE_H
 
 #include <cstdint>
+#include <vector>
 
 namespace ctrack {
 
@@ -23,15 +24,12 @@ const char *region_name(int r);
 struct Profile {
     static constexpr float kEmpty = -100;
     float edge[kRows][2];
-    // How much of its convex hull the foreground of the profile's rows
-    // fills, from 0 to 1 (0 for an empty box).
+    // How much of its convex hull the blob fills, from 0 to 1 (0 for an
+    // empty box), over the profile's rows: the area inside its outer
+    // contour, holes included (a ring fills its hull as a disc does).
     float fill;
     bool empty(int row) const { return edge[row][0] == kEmpty; }
 };
-
-// The profile of the foreground (non-zero) pixels of mask inside the box
-// [x0, x1) x [y0, y1).
-void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Profile *p);
 
 // A blob's outline as a distance map on a kGrid x kGrid canvas of the
 // canonical box (x from -0.5 to 0.5 box heights around its centre, y from 0
@@ -41,14 +39,24 @@ constexpr int kGrid = 32;
 struct Outline {
     uint16_t dist[kGrid][kGrid];
 };
-void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o);
 
 // The blob: its profile says which regions can vote (abstention); its
 // outline gives eq. (1)'s distances.
 struct Shape {
     Profile profile;
     Outline outline;
+    // shape_of()'s working memory, kept so that a Shape used again makes
+    // no allocation: the box's pixels (foreground, background reached from
+    // the box's border, or hole) and the flood fill's queue.
+    std::vector<uint8_t> cells;
+    std::vector<int> todo;
 };
+
+// The shape of the foreground (non-zero) pixels of mask inside the box
+// [x0, x1) x [y0, y1): for each of the profile's rows, the leftmost and
+// rightmost foreground points, from the box's centre in box heights (so a
+// shape keeps its proportions), and the outline's distance map.
+void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s);
 
 struct Vote {
     // Eq. (1) per region: the mean distance from the best silhouette's

@@ -257,8 +257,7 @@ Shape shape_of(bool (*inside)(double u, double v))
         for (int c = 0; c < w; c++)
             m[r * w + c] = inside((c + 0.5) / w, (r + 0.5) / h) ? 255 : 0;
     Shape s;
-    profile_of(m.data(), w, 0, 0, w, h, &s.profile);
-    outline_of(m.data(), w, 0, 0, w, h, &s.outline);
+    shape_of(m.data(), w, 0, 0, w, h, &s);
     return s;
 }
 
@@ -317,6 +316,14 @@ START_TEST(fill_of_the_convex_hull)
     const Shape l = shape_of([](double u, double v) { return v >= 0.5 || u < 0.5; });
     ck_assert_float_eq_tol(l.profile.fill, 0.75f / 0.875f, 0.02f);
     ck_assert_float_eq(shape_of([](double, double) { return false; }).profile.fill, 0.0f);
+    // Holes count as filled (the area inside the outer contour); a gap open
+    // to the box's border, as between legs, does not.
+    const Shape framed = shape_of([](double u, double v) {
+        return !(u > 0.25 && u < 0.75 && v > 0.25 && v < 0.75);
+    });
+    ck_assert_float_eq_tol(framed.profile.fill, 1.0f, 1e-6f);
+    const Shape arch = shape_of([](double u, double v) { return v < 0.5 || u < 0.25 || u > 0.75; });
+    ck_assert_float_eq_tol(arch.profile.fill, 0.75f, 0.02f);
     // A walking person (head, neck, torso with arms, legs apart) fills far
     // less, and the vote takes them for a pedestrian.
     const Shape walker = shape_of(walking_person);
@@ -328,10 +335,12 @@ START_TEST(fill_of_the_convex_hull)
 END_TEST
 
 // Shapes with a person's aspect that no person has: each fills its convex
-// hull, and the classifier rejects it even where the regions alone would
-// vote for it (a frontal torso is box-like, and six of the nine regions
-// hold torso rows). docs/pixels.md lists the shapes that still pass.
-START_TEST(convex_non_human_shapes_are_rejected)
+// hull (a ring's hole counts as filled), and the classifier rejects it even
+// where the regions alone would vote for it (a frontal torso is box-like,
+// and six of the nine regions hold torso rows; the ring's inner edge gives
+// every region outline points to match). docs/pixels.md lists the shapes
+// that still pass.
+START_TEST(hull_filling_non_human_shapes_are_rejected)
 {
     struct {
         const char *name;
@@ -343,6 +352,11 @@ START_TEST(convex_non_human_shapes_are_rejected)
         {"diamond", [](double u, double v) { return std::fabs(u - .5) + std::fabs(v - .5) <= .5; }},
         {"triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * v; }},
         {"inverted triangle", [](double u, double v) { return std::fabs(u - .5) <= .5 * (1 - v); }},
+        {"ring",
+         [](double u, double v) {
+             const double r = (u - .5) * (u - .5) + (v - .5) * (v - .5);
+             return r <= .25 && r >= .1;
+         }},
     };
     for (const auto &sh : shapes) {
         const Shape s = shape_of(sh.inside);
@@ -422,8 +436,7 @@ START_TEST(real_blobs_are_classified)
     for (const RealBlob &b : blobs) {
         ck_assert(b.sequence == 0 || b.sequence == 1);
         ck_assert(b.label == 0 || b.label == 1);
-        profile_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape.profile);
-        outline_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape.outline);
+        shape_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape);
         const bool person = classify(shape, default_thresholds()).score > 0.5f;
         n[b.sequence][b.label]++;
         ok[b.sequence][b.label] += person == (b.label == 1);
@@ -462,7 +475,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, fragments_merge_and_groups_split);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, fill_of_the_convex_hull);
-    tcase_add_test(tc, convex_non_human_shapes_are_rejected);
+    tcase_add_test(tc, hull_filling_non_human_shapes_are_rejected);
     tcase_add_test(tc, occluded_regions_abstain);
     tcase_add_test(tc, real_blobs_are_classified);
     suite_add_tcase(s, tc);

@@ -30,7 +30,7 @@ extern "C" {
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
 #define CT_VERSION_MINOR 6
-#define CT_VERSION_PATCH 0
+#define CT_VERSION_PATCH 1
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
 #define CT_ABI_VERSION 1
@@ -312,9 +312,10 @@ typedef struct ct_candidate {
      * box heights, between the blob's contour and the best silhouette's; -1
      * where the region abstained (occluded or out of the frame). */
     float region_distance[CT_REGIONS];
-    /* How much of its convex hull the blob's foreground fills, 0 to 1
-     * (0.6.0): a walking person's outline is concave at the neck, under the
-     * arms and between the legs. Read it only with a 0.6.0 or newer header:
+    /* How much of its convex hull the blob fills, 0 to 1 (0.6.0; from
+     * 0.6.1 the area inside its outer contour, holes included): a walking
+     * person's outline is concave at the neck, under the arms and between
+     * the legs. Read it only with a 0.6.0 or newer header:
      * a caller built against an older one passes the smaller size and gets
      * the fields above. */
     float fill;
