@@ -97,10 +97,35 @@ constexpr int kLanes = 0;
 size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
+           old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
            mask_.capacity() + frozen_.capacity() + line_y_.capacity() + line_u_.capacity() +
-           line_v_.capacity();
+           line_v_.capacity() + line_vmax_.capacity();
 }
 
+void Background::swap_models()
+{
+    my_.swap(old_my_);
+    vy_.swap(old_vy_);
+    mu_.swap(old_mu_);
+    mv_.swap(old_mv_);
+}
+
+void Background::rollback()
+{
+    if (!kept_)
+        return;
+    swap_models();
+    w_ = old_shape_.w;
+    h_ = old_shape_.h;
+    fw_ = old_shape_.fw;
+    fh_ = old_shape_.fh;
+    color_ = old_shape_.color;
+    frames_ = old_shape_.frames;
+    kept_ = false;
+}
+
+// Sizes the model for the image. The update that follows starts it from
+// the image itself: M and the chroma take its samples, V starts at kVMax.
 void Background::start(const Planes &img)
 {
     fw_ = img.width;
@@ -109,29 +134,34 @@ void Background::start(const Planes &img)
     w_ = (img.width + kScale - 1) / kScale;
     h_ = (img.height + kScale - 1) / kScale;
     const size_t n = (size_t)w_ * h_;
-    my_.assign(n, 0);
-    vy_.assign(n, kVMax);
-    mu_.assign(n, 128);
+    my_.resize(n);
+    vy_.resize(n);
+    mu_.assign(n, 128); // grey frames: no colour, and the loop leaves them
     mv_.assign(n, 128);
     mask_.assign(n, 0);
     frozen_.assign(n, 0);
-    for (int y = 0; y < h_; y++)
-        for (int x = 0; x < w_; x++) {
-            size_t i = (size_t)y * w_ + x;
-            my_[i] = img.y[(size_t)(y * kScale) * img.y_stride + x * kScale];
-            if (color_) {
-                const int c = kScale / 2;
-                mu_[i] = img.u[(size_t)(y * c) * img.u_stride + (size_t)(x * c) * img.c_step];
-                mv_[i] = img.v[(size_t)(y * c) * img.v_stride + (size_t)(x * c) * img.c_step];
-            }
-        }
+    line_vmax_.assign(w_, kVMax);
     frames_ = 0;
 }
 
 void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
 {
-    if (frames_ == 0 || img.width != fw_ || img.height != fh_ || img.color != color_)
+    // The model so far moves to the old buffers, kept for rollback(); the
+    // update reads it there and writes the new one in place of the current.
+    old_shape_ = Shape{w_, h_, fw_, fh_, color_, frames_};
+    swap_models();
+    kept_ = true;
+    const bool restart =
+        frames_ == 0 || img.width != fw_ || img.height != fh_ || img.color != color_;
+    if (restart) {
         start(img);
+    } else {
+        const size_t n = (size_t)w_ * h_;
+        my_.resize(n);
+        vy_.resize(n);
+        mu_.resize(n);
+        mv_.resize(n); // grey frames leave the chroma alone: nothing reads it
+    }
     std::fill(frozen_.begin(), frozen_.end(), 0);
     for (int k = 0; k < n_frozen; k++) {
         const Rect &r = frozen[k];
@@ -181,14 +211,21 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
                 iv[x] = sv[x * cstep];
             }
         }
+        // The model before this frame: the old buffers, or on a (re)start
+        // the image's own samples (and V at kVMax). Never the buffers
+        // written, so the restrict pointers hold.
+        const uint8_t *__restrict om = restart ? iy : old_my_.data() + row;
+        const uint8_t *__restrict ov = restart ? line_vmax_.data() : old_vy_.data() + row;
+        const uint8_t *__restrict ou = restart ? iu : old_mu_.data() + row;
+        const uint8_t *__restrict ow = restart ? iv : old_mv_.data() + row;
         int x = 0;
 #if defined(__GNUC__)
         for (; x + kLanes <= w; x += kLanes) {
-            Lanes M = load(my + x), V = load(vy + x);
+            Lanes M = load(om + x), V = load(ov + x);
             const Lanes I = load(iy + x), live = load(frozen + x) == splat<Lanes>(0);
             Lanes fg;
             if (color) {
-                Lanes BU = load(mu + x), BV = load(mv + x);
+                Lanes BU = load(ou + x), BV = load(ow + x);
                 fg = colour(I, load(iu + x), load(iv + x), M, V, BU, BV, live, rates);
                 store(mu + x, BU);
                 store(mv + x, BV);
@@ -201,11 +238,11 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
         }
 #endif
         for (; x < w; x++) {
-            int M = my[x], V = vy[x];
+            int M = om[x], V = ov[x];
             const int live = !frozen[x];
             int fg;
             if (color) {
-                int BU = mu[x], BV = mv[x];
+                int BU = ou[x], BV = ow[x];
                 fg = colour<int>(iy[x], iu[x], iv[x], M, V, BU, BV, live, rates);
                 mu[x] = (uint8_t)BU;
                 mv[x] = (uint8_t)BV;

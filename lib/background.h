@@ -27,6 +27,12 @@ public:
     // restarts the model.
     void apply(const Planes &img, const Rect *frozen, int n_frozen);
     void reset() { frames_ = 0; }
+    // The model as it was before the last apply() (and absorb()) is kept
+    // until commit(): rollback() returns to it, so that a step that fails
+    // after the update leaves the model untouched. Both are O(1) and never
+    // throw.
+    void commit() { kept_ = false; }
+    void rollback();
 
     const uint8_t *mask() const { return mask_.data(); }
 
@@ -46,6 +52,7 @@ public:
 
 private:
     void start(const Planes &img);
+    void swap_models();
 
     int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0;
     bool color_ = false;
@@ -53,8 +60,18 @@ private:
     // Means and variances (Sigma-Delta: M moves one level a frame toward
     // the image, V toward N times |I - M|).
     std::vector<uint8_t> my_, vy_, mu_, mv_;
+    // The model before the last apply(), while kept_: apply() reads it and
+    // writes the new one into the buffers above (double buffering: no copy).
+    struct Shape {
+        int w, h, fw, fh;
+        bool color;
+        int frames;
+    } old_shape_{};
+    std::vector<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    bool kept_ = false;
     std::vector<uint8_t> mask_, frozen_;
     std::vector<uint8_t> line_y_, line_u_, line_v_; // one row's samples
+    std::vector<uint8_t> line_vmax_;                // kVMax, a row of it
 };
 
 } // namespace ctrack

@@ -46,12 +46,15 @@ NNIndex &NNIndex::operator=(const NNIndex &other)
 
 void NNIndex::build(const float *points, int n, int dim)
 {
+    // Empty until the tree stands: if an allocation fails on the way, the
+    // index is left empty, never half built.
     impl_.reset();
+    n_ = dim_ = 0;
     points_.assign(points, points + (size_t)n * dim);
-    n_ = n;
-    dim_ = dim;
     if (n > 0)
         impl_.reset(new Impl(points_.data(), n, dim));
+    n_ = n;
+    dim_ = dim;
 }
 
 void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps) const

@@ -342,31 +342,33 @@ void Engine::reidentify(const ct_detection *dets)
 
 // Templates: made when a track is confirmed, remade from its detection at
 // most every kTemplateRefresh seconds while nothing occludes it. Slots of
-// removed tracks are reused.
+// removed tracks are reused. A template is built in a slot that no track
+// points to, before or in this step, and only then does the track take it:
+// if the step fails on the way, the tracks restored point to their old
+// templates, untouched.
 void Engine::learn_templates(int64_t t_us)
 {
     slot_used_.assign(templates_.size(), 0);
-    for (const Track &t : tracks_)
-        if (t.tmpl >= 0)
-            slot_used_[t.tmpl] = 1;
+    for (const std::vector<Track> *v : {&tracks_, &saved_tracks_})
+        for (const Track &t : *v)
+            if (t.tmpl >= 0)
+                slot_used_[t.tmpl] = 1;
+    size_t slot = 0;
     for (size_t i = 0; i < tracks_.size(); i++) {
         Track &t = tracks_[i];
         if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0 || t.last_update_us != t_us)
             continue;
         if (t.tmpl >= 0 && ((double)(t_us - t.tmpl_us) * 1e-6 < kTemplateRefresh || occluded(i)))
             continue;
-        if (t.tmpl < 0) {
-            size_t slot = 0;
-            while (slot < slot_used_.size() && slot_used_[slot])
-                slot++;
-            if (slot == templates_.size()) {
-                templates_.emplace_back();
-                slot_used_.push_back(0);
-            }
-            slot_used_[slot] = 1;
-            t.tmpl = (int)slot;
+        while (slot < slot_used_.size() && slot_used_[slot])
+            slot++;
+        if (slot == templates_.size()) {
+            templates_.emplace_back();
+            slot_used_.push_back(0);
         }
-        templates_[t.tmpl].build(&det_desc_[(size_t)t.det_index * kPoints * kDescDim]);
+        templates_[slot].build(&det_desc_[(size_t)t.det_index * kPoints * kDescDim]);
+        slot_used_[slot] = 1;
+        t.tmpl = (int)slot;
         t.tmpl_us = t_us;
         template_builds_++;
     }
@@ -514,17 +516,30 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
 {
     saved_tracks_ = tracks_;
     saved_reported_ = reported_;
+    saved_candidates_ = candidates_;
     const uint64_t next_id = next_id_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
+    const uint64_t runs[3] = {ms_runs_, ddis_runs_, template_builds_};
+    uint64_t stage_ns[CT_STATS_MAX_STAGES];
+    std::copy(stage_ns_, stage_ns_ + CT_STATS_MAX_STAGES, stage_ns);
+    background_.commit(); // the last step's update stands
     try {
         step_unguarded(t_us, img, image, dets, n);
     } catch (...) {
+        // Appearance templates need nothing here: learn_templates() builds
+        // in slots that the restored tracks do not point to.
         tracks_ = saved_tracks_;
         reported_ = saved_reported_;
+        candidates_ = saved_candidates_;
+        background_.rollback();
         next_id_ = next_id;
         last_us_ = last_us;
         has_time_ = has_time;
+        ms_runs_ = runs[0];
+        ddis_runs_ = runs[1];
+        template_builds_ = runs[2];
+        std::copy(stage_ns, stage_ns + CT_STATS_MAX_STAGES, stage_ns_);
         throw;
     }
 }
@@ -680,7 +695,7 @@ size_t Engine::memory_bytes() const
            background_.memory_bytes() + blobs_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
            cand_dets_.capacity() * sizeof(ct_detection) +
-           candidates_.capacity() * sizeof(ct_candidate);
+           (candidates_.capacity() + saved_candidates_.capacity()) * sizeof(ct_candidate);
 }
 
 void Engine::report(int64_t t_us, ImageSize image)

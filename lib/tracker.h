@@ -137,6 +137,7 @@ private:
     // throw). Kept as members so that steady state does not allocate.
     std::vector<Track> saved_tracks_;
     std::vector<ct_track> saved_reported_;
+    std::vector<ct_candidate> saved_candidates_;
 
     // Scratch reused from step to step.
     Assigner assigner_;

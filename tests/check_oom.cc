@@ -13,8 +13,10 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "input.h"
 
 static const char *data_dir;
+static const char *tud_video; // TUD-Campus as Y4M (made by the build)
 static long fail_countdown = -1; // the allocation that fails; -1: none
 static long allocations = 0;
 
@@ -47,11 +49,22 @@ static std::vector<ct_track> tracks_of(ct_tracker *t)
     return out;
 }
 
-static void assert_equal(const std::vector<ct_track> &a, const std::vector<ct_track> &b)
+static std::vector<ct_candidate> candidates_of(ct_tracker *t)
+{
+    std::vector<ct_candidate> out(512);
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_candidates(t, out.data(), out.size(), sizeof(ct_candidate),
+                                               &count),
+                     CT_OK);
+    out.resize(count);
+    return out;
+}
+
+template <typename T> static void assert_equal(const std::vector<T> &a, const std::vector<T> &b)
 {
     ck_assert_uint_eq(a.size(), b.size());
     if (!a.empty())
-        ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(ct_track)), 0);
+        ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0);
 }
 
 START_TEST(create_out_of_memory)
@@ -110,6 +123,88 @@ START_TEST(feed_out_of_memory_changes_nothing)
 }
 END_TEST
 
+// The same with the frames: TUD-Campus's, pixels only (background model,
+// blobs, contour template) and with its public detections (mean shift,
+// appearance templates). Each frame is refused twice, at two different
+// allocations, before it goes through: what OpenCV and FLANN allocate, the
+// background model's update and the templates' rebuilding must all be
+// undone, so that the tracks and candidates stay those of an undisturbed
+// tracker, to the byte.
+static void pixels_out_of_memory(int source)
+{
+    char path[1024], err[512];
+    std::snprintf(path, sizeof path, "%s/TUD-Campus/det/det.txt", data_dir);
+    ct_detfile df;
+    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    ct_input_params ip = {0, 0, CT_FORMAT_I420};
+    ct_input *in = nullptr;
+    ct_input_info info;
+    ck_assert_msg(ct_input_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    cfg.source = source;
+    ct_tracker *ref = nullptr, *t = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
+    int refused = 0, frames = 0;
+    for (int k = 1;; k++) {
+        ct_frame f;
+        const int r = ct_input_read(in, &f, err, sizeof err);
+        ck_assert_msg(r >= 0, "%s", err);
+        if (r == 0)
+            break;
+        frames++;
+        f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
+        size_t n = 0;
+        const ct_detection *d = ct_detfile_frame(&df, k, &n);
+        if (source == CT_SOURCE_PIXELS)
+            d = nullptr, n = 0;
+        ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
+
+        const std::vector<ct_track> tracks = tracks_of(t);
+        const std::vector<ct_candidate> cands = candidates_of(t);
+        // Allocation k % 5, then a later one: a feed that makes fewer
+        // allocations goes through at once.
+        bool done = false;
+        for (long countdown : {(long)(k % 5), (long)(k * 37 % 400)}) {
+            fail_countdown = countdown;
+            const int st = ct_tracker_feed(t, &f, d, n);
+            fail_countdown = -1;
+            if (st == CT_OK) {
+                done = true;
+                break;
+            }
+            ck_assert_msg(st == CT_ERROR_OUT_OF_MEMORY, "frame %d: %s", k,
+                          ct_tracker_last_error(t));
+            assert_equal(tracks_of(t), tracks);
+            assert_equal(candidates_of(t), cands);
+            refused++;
+        }
+        if (!done)
+            ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
+        assert_equal(tracks_of(t), tracks_of(ref));
+        assert_equal(candidates_of(t), candidates_of(ref));
+    }
+    ck_assert_int_gt(frames, 20);
+    ck_assert_int_gt(refused, frames);
+    ct_tracker_destroy(ref);
+    ct_tracker_destroy(t);
+    ct_input_close(in);
+    ct_detfile_free(&df);
+}
+
+START_TEST(pixels_only_out_of_memory_changes_nothing)
+{
+    pixels_out_of_memory(CT_SOURCE_PIXELS);
+}
+END_TEST
+
+START_TEST(detections_and_pixels_out_of_memory_changes_nothing)
+{
+    pixels_out_of_memory(CT_SOURCE_DETECTIONS);
+}
+END_TEST
+
 // In steady state, a feed makes no heap allocation at all.
 START_TEST(steady_state_does_not_allocate)
 {
@@ -148,16 +243,19 @@ END_TEST
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: check_oom DATA_DIR\n");
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: check_oom DATA_DIR TUD_CAMPUS.y4m\n");
         return 2;
     }
     data_dir = argv[1];
+    tud_video = argv[2];
     Suite *s = suite_create("oom");
     TCase *tc = tcase_create("oom");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, create_out_of_memory);
     tcase_add_test(tc, feed_out_of_memory_changes_nothing);
+    tcase_add_test(tc, pixels_only_out_of_memory_changes_nothing);
+    tcase_add_test(tc, detections_and_pixels_out_of_memory_changes_nothing);
     tcase_add_test(tc, steady_state_does_not_allocate);
     suite_add_tcase(s, tc);
     return run_suite(s);
