@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <opencv2/imgproc.hpp>
 
@@ -17,6 +18,10 @@ constexpr int kMinHeight = 10;        // working pixels
 constexpr double kMergeOverlap = 0.5; // of the narrower blob's width
 constexpr double kMergeGap = 0.25;    // of the taller blob's height
 constexpr double kFarMergeGap = 1.0;  // with the contour template's consent
+// Two tracks' predicted centres inside one blob split it when at least this
+// many blob heights apart: half the width of a person (0.4 of their height
+// in the ground truth), side by side.
+constexpr double kMinCentreGap = 0.2;
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -142,16 +147,9 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
             continue;
         // A group: wider than one person of this height.
         const double person_w = bh / kPersonAspect;
-        int parts = (int)std::lround(bw / person_w);
-        if (parts < 2) {
-            out.push_back(r);
-            continue;
-        }
-        // Cut at the predicted centres of the tracks inside, when there are
-        // several; else at the emptiest column near each equal cut.
-        std::vector<int> &cuts = m.columns;
-        cuts.clear();
-        cuts.push_back(r.x0);
+        const int parts = (int)std::lround(bw / person_w);
+        // The predicted centres of the tracks inside, those closer than
+        // kMinCentreGap heights to the one before counted once.
         std::vector<int> &centres = m.centres;
         centres.clear();
         for (int k = 0; k < n_predicted; k++) {
@@ -161,21 +159,48 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                 centres.push_back(c);
         }
         std::sort(centres.begin(), centres.end());
+        size_t kept = 0;
+        for (size_t k = 0; k < centres.size(); k++)
+            if (kept == 0 || centres[k] - centres[kept - 1] >= kMinCentreGap * bh)
+                centres[kept++] = centres[k];
+        centres.resize(kept);
+        if (parts < 2 && centres.size() < 2) {
+            out.push_back(r);
+            continue;
+        }
+        // The column of [lo, hi] with the least foreground, the nearest to
+        // `want` of equals.
+        auto emptiest = [&](int lo, int hi, int want) {
+            int best = want, best_n = bh + 1;
+            for (int x = lo; x <= hi; x++) {
+                const int n = cv::countNonZero(m.clean.col(x).rowRange(r.y0, r.y1));
+                if (n < best_n || (n == best_n && std::abs(x - want) < std::abs(best - want))) {
+                    best_n = n;
+                    best = x;
+                }
+            }
+            return best;
+        };
+        // Two tracks or more inside: cut between each two at the emptiest
+        // column of the middle half between their centres, even in a blob
+        // no wider than one person (people walking close together merge
+        // into one blob, and each track keeps its own part). Else, in a
+        // blob wider than one person, at the emptiest column near each
+        // equal cut.
+        std::vector<int> &cuts = m.columns;
+        cuts.clear();
+        cuts.push_back(r.x0);
         if (centres.size() >= 2) {
-            for (size_t k = 0; k + 1 < centres.size(); k++)
-                cuts.push_back((centres[k] + centres[k + 1]) / 2);
+            for (size_t k = 0; k + 1 < centres.size(); k++) {
+                const int mid = (centres[k] + centres[k + 1]) / 2;
+                const int span = (centres[k + 1] - centres[k]) / 4;
+                cuts.push_back(emptiest(mid - span, mid + span, mid));
+            }
         } else {
             for (int k = 1; k < parts; k++) {
-                int want = r.x0 + k * bw / parts, best = want, best_n = bh + 1;
-                for (int x = std::max(r.x0 + 1, want - (int)(person_w / 3));
-                     x <= std::min(r.x1 - 2, want + (int)(person_w / 3)); x++) {
-                    int n = cv::countNonZero(m.clean.col(x).rowRange(r.y0, r.y1));
-                    if (n < best_n) {
-                        best_n = n;
-                        best = x;
-                    }
-                }
-                cuts.push_back(best);
+                const int want = r.x0 + k * bw / parts;
+                cuts.push_back(emptiest(std::max(r.x0 + 1, want - (int)(person_w / 3)),
+                                        std::min(r.x1 - 2, want + (int)(person_w / 3)), want));
             }
         }
         cuts.push_back(r.x1);
