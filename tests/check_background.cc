@@ -245,6 +245,44 @@ START_TEST(fragments_merge_and_groups_split)
 }
 END_TEST
 
+// Two people walking close together make one blob no wider than one
+// person of its height. Two tracks predicted inside it, far enough apart,
+// split it between their heads; one track, or two nearly on top of each
+// other, do not.
+START_TEST(close_pair_splits_between_tracks)
+{
+    std::vector<uint8_t> m(W * H, 0);
+    auto rect = [&](int x0, int y0, int x1, int y1) {
+        for (int r = y0; r < y1; r++)
+            for (int c = x0; c < x1; c++)
+                m[r * W + c] = 255;
+    };
+    rect(84, 20, 92, 27);  // a head
+    rect(96, 20, 104, 27); // another
+    rect(80, 27, 108, 60); // their bodies, overlapping: 28 wide, 40 tall
+    BlobFinder bf;
+    std::vector<Rect> out;
+    auto track_at = [](int centre) { return Rect{centre - 8, 20, centre + 8, 60}; };
+    const Rect two[2] = {track_at(88), track_at(100)}; // 12 apart, 0.3 heights
+    bf.find(m.data(), W, H, two, 2, out);
+    ck_assert_int_eq((int)out.size(), 2);
+    const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
+    const Rect &right = out[0].x0 < out[1].x0 ? out[1] : out[0];
+    ck_assert_int_eq(left.x0, 80);
+    ck_assert_int_eq(right.x1, 108);
+    ck_assert_msg(left.x1 >= 92 && left.x1 <= 96, "cut at %d, not between the heads", left.x1);
+    ck_assert_int_eq(right.x0, left.x1);
+    // No tracks, one, or two closer than a fifth of the height: one blob.
+    for (int n : {0, 1}) {
+        bf.find(m.data(), W, H, two, n, out);
+        ck_assert_int_eq((int)out.size(), 1);
+    }
+    const Rect close[2] = {track_at(92), track_at(97)}; // 5 apart
+    bf.find(m.data(), W, H, close, 2, out);
+    ck_assert_int_eq((int)out.size(), 1);
+}
+END_TEST
+
 namespace {
 
 Shape shape_of(bool (*inside)(double u, double v))
@@ -473,6 +511,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
     tcase_add_test(tc, fragments_merge_and_groups_split);
+    tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, fill_of_the_convex_hull);
     tcase_add_test(tc, hull_filling_non_human_shapes_are_rejected);
