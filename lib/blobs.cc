@@ -22,6 +22,11 @@ constexpr double kFarMergeGap = 1.0;  // with the contour template's consent
 // many blob heights apart: half the width of a person (0.4 of their height
 // in the ground truth), side by side.
 constexpr double kMinCentreGap = 0.2;
+// Between two heads on a blob's top edge, the edge dips at least this many
+// blob heights below both (a head is about 0.13 of a person's height; 0.06
+// to 0.1 score alike, 0.06 was best on PETS09-S2L1 frames 1-400:
+// docs/tuning.md).
+constexpr double kHeadDip = 0.06;
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -43,7 +48,7 @@ struct BlobFinder::Impl {
     cv::Mat close_k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 5));
     std::vector<std::vector<cv::Point>> contours;
     std::vector<Rect> blobs;
-    std::vector<int> columns, centres;
+    std::vector<int> columns, centres, tops;
     std::vector<float> votes;
     Shape shape;
 };
@@ -60,8 +65,9 @@ size_t BlobFinder::memory_bytes() const
 {
     const Impl &m = *impl_;
     return m.clean.total() + m.tmp.total() + m.blobs.capacity() * sizeof(Rect) +
-           m.columns.capacity() * sizeof(int) + m.votes.capacity() * sizeof(float) +
-           m.shape.cells.capacity() + m.shape.todo.capacity() * sizeof(int);
+           m.votes.capacity() * sizeof(float) + m.shape.cells.capacity() +
+           (m.shape.todo.capacity() + m.columns.capacity() + m.centres.capacity() +
+            m.tops.capacity()) * sizeof(int);
 }
 
 Vote BlobFinder::classify(const Rect &r)
@@ -81,6 +87,64 @@ void BlobFinder::clean(const uint8_t *mask, int w, int h)
     // >= 0.5 fell from 69% to 57% on PETS09-S2L1). Specks are dropped by
     // area in find().
     cv::morphologyEx(in, m.clean, cv::MORPH_CLOSE, m.close_k);
+}
+
+Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
+{
+    const cv::Mat &clean = impl_->clean;
+    Rect p{x0, r.y1, x1, r.y0};
+    for (int y = r.y0; y < r.y1; y++)
+        if (cv::countNonZero(clean.row(y).colRange(x0, x1)) > 0) {
+            p.y0 = std::min(p.y0, y);
+            p.y1 = std::max(p.y1, y + 1);
+        }
+    return p;
+}
+
+int BlobFinder::between_heads(const Rect &r)
+{
+    Impl &m = *impl_;
+    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
+    // The top edge: each column's first foreground row (r.y1 if none).
+    std::vector<int> &top = m.tops;
+    top.assign(bw, r.y1);
+    for (int x = r.x0; x < r.x1; x++)
+        for (int y = r.y0; y < r.y1; y++)
+            if (m.clean.at<uint8_t>(y, x)) {
+                top[x - r.x0] = y;
+                break;
+            }
+    // The highest column is one head; the other is the highest column at
+    // least kMinCentreGap heights away with a dip of kHeadDip heights below
+    // both between them.
+    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
+    const int gap = (int)std::ceil(kMinCentreGap * bh);
+    int h2 = -1, dip = -1;
+    for (int i = 0; i < bw; i++) {
+        if (std::abs(i - h1) < gap || (h2 >= 0 && top[i] >= top[h2]))
+            continue;
+        const int lo = std::min(i, h1), hi = std::max(i, h1);
+        const int d = (int)(std::max_element(top.begin() + lo, top.begin() + hi + 1) - top.begin());
+        if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh) {
+            h2 = i;
+            dip = d;
+        }
+    }
+    if (h2 < 0)
+        return -1;
+    // The middle of the dip's bottom (the top edge is often flat there:
+    // shoulders).
+    const int hi = std::max(h1, h2);
+    int last = dip;
+    while (last + 1 <= hi && top[last + 1] == top[dip])
+        last++;
+    // The template decides: both parts must be pedestrians by its vote,
+    // and look more like one than the whole does.
+    const int cut = r.x0 + (dip + last + 1) / 2;
+    const float whole = std::max(vote(r), 0.5f);
+    if (vote(rows_of(r, r.x0, cut)) > whole && vote(rows_of(r, cut, r.x1)) > whole)
+        return cut;
+    return -1;
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
@@ -164,7 +228,8 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
             if (kept == 0 || centres[k] - centres[kept - 1] >= kMinCentreGap * bh)
                 centres[kept++] = centres[k];
         centres.resize(kept);
-        if (parts < 2 && centres.size() < 2) {
+        const int head_cut = parts < 2 && centres.size() < 2 ? between_heads(r) : -1;
+        if (parts < 2 && centres.size() < 2 && head_cut < 0) {
             out.push_back(r);
             continue;
         }
@@ -186,11 +251,15 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         // no wider than one person (people walking close together merge
         // into one blob, and each track keeps its own part). Else, in a
         // blob wider than one person, at the emptiest column near each
-        // equal cut.
+        // equal cut; in a narrower one, between two heads on its top edge
+        // when the contour template agrees (people who came in together,
+        // whom no track told apart).
         std::vector<int> &cuts = m.columns;
         cuts.clear();
         cuts.push_back(r.x0);
-        if (centres.size() >= 2) {
+        if (head_cut >= 0) {
+            cuts.push_back(head_cut);
+        } else if (centres.size() >= 2) {
             for (size_t k = 0; k + 1 < centres.size(); k++) {
                 const int mid = (centres[k] + centres[k + 1]) / 2;
                 const int span = (centres[k + 1] - centres[k]) / 4;
@@ -206,12 +275,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         cuts.push_back(r.x1);
         for (size_t k = 0; k + 1 < cuts.size(); k++) {
             // Each part's own vertical extent.
-            Rect part{cuts[k], r.y1, cuts[k + 1], r.y0};
-            for (int y = r.y0; y < r.y1; y++)
-                if (cv::countNonZero(m.clean.row(y).colRange(cuts[k], cuts[k + 1])) > 0) {
-                    part.y0 = std::min(part.y0, y);
-                    part.y1 = std::max(part.y1, y + 1);
-                }
+            const Rect part = rows_of(r, cuts[k], cuts[k + 1]);
             if (part.y1 > part.y0 && part.x1 > part.x0)
                 out.push_back(part);
         }

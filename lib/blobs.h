@@ -38,6 +38,12 @@ public:
 
 private:
     float vote(const Rect &r) { return classify(r).score; }
+    // The part of r between columns x0 and x1, with its own rows.
+    Rect rows_of(const Rect &r, int x0, int x1) const;
+    // Where to cut r between two people side by side, from two heads on its
+    // top edge, when the contour template takes both parts for pedestrians
+    // and scores them above the whole: the column, or -1.
+    int between_heads(const Rect &r);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
