@@ -120,14 +120,19 @@ int BlobFinder::between_heads(const Rect &r)
     const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
     const int gap = (int)std::ceil(kMinCentreGap * bh);
     int h2 = -1, dip = -1;
-    for (int i = 0; i < bw; i++) {
-        if (std::abs(i - h1) < gap || (h2 >= 0 && top[i] >= top[h2]))
-            continue;
-        const int lo = std::min(i, h1), hi = std::max(i, h1);
-        const int d = (int)(std::max_element(top.begin() + lo, top.begin() + hi + 1) - top.begin());
-        if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh) {
-            h2 = i;
-            dip = d;
+    for (int dir : {-1, 1}) {
+        // Walking away from h1, d is the deepest column passed (the first
+        // of equals, seen from the left).
+        int d = h1;
+        for (int i = h1 + dir; i >= 0 && i < bw; i += dir) {
+            if (top[i] > top[d] || (dir < 0 && top[i] == top[d]))
+                d = i;
+            if (std::abs(i - h1) < gap || (h2 >= 0 && top[i] >= top[h2]))
+                continue;
+            if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh) {
+                h2 = i;
+                dip = d;
+            }
         }
     }
     if (h2 < 0)
