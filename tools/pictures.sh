@@ -1,7 +1,8 @@
 #!/bin/sh
 # Draws ctrack's tracks on a few PETS09-S2L1 frames for docs/ and the README:
 # docs/img/pets09-NNN.jpg (frame numbers 1-based, as in the ground truth) and
-# a short GIF. Uses the public detections and the defaults.
+# a short GIF with the public detections, and docs/img/pets09-pixels-121.jpg
+# from the pixels alone; the defaults.
 #   pictures.sh BUILD_DIR
 set -eu
 build=${1:-build}
@@ -17,6 +18,10 @@ for n in 121 301 651; do
     ffmpeg -v error -y -i "$tmp/overlay.y4m" -vf "select=eq(n\,$((n - 1)))" -frames:v 1 \
         -q:v 4 "$out/pets09-$n.jpg"
 done
+# From the pixels alone (no detections): one frame.
+"$build/tools/ct-track" -q -r 7 -o /dev/null --overlay "$tmp/pixels.y4m" "$pets"
+ffmpeg -v error -y -i "$tmp/pixels.y4m" -vf "select=eq(n\,120)" -frames:v 1 -q:v 4 \
+    "$out/pets09-pixels-121.jpg"
 # Frames 100-135 at the true 7 fps, 320 pixels wide.
 ffmpeg -v error -y -i "$tmp/overlay.y4m" \
     -vf "select=between(n\,99\,134),setpts=N/7/TB,scale=320:-1:flags=lanczos,split[a][b];[a]palettegen=max_colors=32:stats_mode=diff[p];[b][p]paletteuse=dither=none:diff_mode=rectangle" \
