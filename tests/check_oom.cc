@@ -67,6 +67,14 @@ template <typename T> static void assert_equal(const std::vector<T> &a, const st
         ck_assert_int_eq(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0);
 }
 
+// Loads the public detections of a sequence of tests/data/mot15.
+static void load_detections(const char *seq, ct_detfile *df)
+{
+    char path[1024], err[512];
+    std::snprintf(path, sizeof path, "%s/%s/det/det.txt", data_dir, seq);
+    ck_assert_msg(ct_detfile_load(path, df, err, sizeof err) == 0, "%s", err);
+}
+
 START_TEST(create_out_of_memory)
 {
     ct_config cfg;
@@ -84,10 +92,8 @@ END_TEST
 // change nothing; the retry then must give what an undisturbed tracker gives.
 START_TEST(feed_out_of_memory_changes_nothing)
 {
-    char path[1024], err[512];
-    std::snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data_dir);
     ct_detfile df;
-    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    load_detections("PETS09-S2L1", &df);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
     ct_tracker *ref = nullptr, *t = nullptr;
@@ -132,10 +138,9 @@ END_TEST
 // tracker, to the byte.
 static void pixels_out_of_memory(int source)
 {
-    char path[1024], err[512];
-    std::snprintf(path, sizeof path, "%s/TUD-Campus/det/det.txt", data_dir);
     ct_detfile df;
-    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    load_detections("TUD-Campus", &df);
+    char err[512];
     ct_input_params ip = {0, 0, CT_FORMAT_I420};
     ct_input *in = nullptr;
     ct_input_info info;
@@ -208,10 +213,8 @@ END_TEST
 // In steady state, a feed makes no heap allocation at all.
 START_TEST(steady_state_does_not_allocate)
 {
-    char path[1024], err[512];
-    std::snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data_dir);
     ct_detfile df;
-    ck_assert_msg(ct_detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    load_detections("PETS09-S2L1", &df);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
     ct_tracker *t = nullptr;
