@@ -115,12 +115,12 @@ void Background::rollback()
     if (!kept_)
         return;
     swap_models();
-    w_ = old_shape_.w;
-    h_ = old_shape_.h;
-    fw_ = old_shape_.fw;
-    fh_ = old_shape_.fh;
-    color_ = old_shape_.color;
-    frames_ = old_shape_.frames;
+    w_ = old_dims_.w;
+    h_ = old_dims_.h;
+    fw_ = old_dims_.fw;
+    fh_ = old_dims_.fh;
+    color_ = old_dims_.color;
+    frames_ = old_dims_.frames;
     kept_ = false;
 }
 
@@ -148,7 +148,7 @@ void Background::apply(const Planes &img, const Rect *frozen, int n_frozen)
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
-    old_shape_ = Shape{w_, h_, fw_, fh_, color_, frames_};
+    old_dims_ = Dims{w_, h_, fw_, fh_, color_, frames_};
     swap_models();
     kept_ = true;
     const bool restart =

@@ -62,11 +62,11 @@ private:
     std::vector<uint8_t> my_, vy_, mu_, mv_;
     // The model before the last apply(), while kept_: apply() reads it and
     // writes the new one into the buffers above (double buffering: no copy).
-    struct Shape {
+    struct Dims {
         int w, h, fw, fh;
         bool color;
         int frames;
-    } old_shape_{};
+    } old_dims_{};
     std::vector<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     bool kept_ = false;
     std::vector<uint8_t> mask_, frozen_;

@@ -233,10 +233,13 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
             if (kept == 0 || centres[k] - centres[kept - 1] >= kMinCentreGap * bh)
                 centres[kept++] = centres[k];
         centres.resize(kept);
-        const int head_cut = parts < 2 && centres.size() < 2 ? between_heads(r) : -1;
-        if (parts < 2 && centres.size() < 2 && head_cut < 0) {
-            out.push_back(r);
-            continue;
+        int head_cut = -1;
+        if (parts < 2 && centres.size() < 2) {
+            head_cut = between_heads(r);
+            if (head_cut < 0) {
+                out.push_back(r);
+                continue;
+            }
         }
         // The column of [lo, hi] with the least foreground, the nearest to
         // `want` of equals.
