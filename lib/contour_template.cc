@@ -231,10 +231,10 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         while (!row[rr])
             rr--;
         // The area inside the outer contour: foreground and holes.
-        const uint8_t *cells = s->cells.data() + (size_t)(y - y0) * w - x0;
+        const uint8_t *cells = s->cells.data() + (size_t)(y - y0) * w;
         int count = 0;
         for (int x = l; x <= rr; x++)
-            count += cells[x] != kOutside;
+            count += cells[x - x0] != kOutside;
         // Pixel centres, from the box's centre in box heights.
         p->edge[r][0] = (float)((l + 0.5 - centre) / h);
         p->edge[r][1] = (float)((rr + 0.5 - centre) / h);
