@@ -25,7 +25,7 @@ public:
     // (working coordinates: the boxes of confirmed tracks) are not learnt,
     // so a person who stops stays foreground. A frame of another size
     // restarts the model.
-    void apply(const Planes &img, const Rect *frozen, int n_frozen);
+    void apply(int64_t t_us, const Planes &img, const Rect *frozen, int n_frozen);
     void reset() { frames_ = 0; }
     // The model as it was before the last apply() (and absorb()) is kept
     // until commit(): rollback() returns to it, so that a step that fails
@@ -57,6 +57,7 @@ private:
     int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0;
     bool color_ = false;
     int frames_ = 0;
+    int64_t start_us_ = 0, last_us_ = 0;
     // Means and variances (Sigma-Delta: M moves one level a frame toward
     // the image, V toward N times |I - M|).
     std::vector<uint8_t> my_, vy_, mu_, mv_;
@@ -66,6 +67,7 @@ private:
         int w, h, fw, fh;
         bool color;
         int frames;
+        int64_t start_us, last_us;
     } old_dims_{};
     std::vector<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     bool kept_ = false;

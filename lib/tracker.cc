@@ -403,7 +403,7 @@ void Engine::update_background(const Planes &img)
         if (t.state == CT_TRACK_CONFIRMED && t.moved)
             frozen_.push_back(predicted_.back());
     }
-    background_.apply(img, frozen_.data(), (int)frozen_.size());
+    background_.apply(last_us_, img, frozen_.data(), (int)frozen_.size());
 }
 
 ct_candidate Engine::vote_on(Rect r, float left, float top, float width, float height)

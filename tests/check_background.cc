@@ -48,6 +48,12 @@ struct Gray {
     }
 };
 
+// The timestamp of frame k (from 0) at 25 frames/s, or at `fps`.
+int64_t at(int k, double fps = 25)
+{
+    return (int64_t)std::llround(k * 1e6 / fps);
+}
+
 int foreground_in(const Background &bg, int x0, int y0, int x1, int y1)
 {
     int n = 0;
@@ -68,7 +74,7 @@ START_TEST(moving_square_is_foreground)
     for (int k = 0; k < 60; k++) {
         g.fill(100);
         g.square(10 + 2 * k, 40, 20, 200);
-        bg.apply(g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), nullptr, 0);
     }
     const int x = 10 + 2 * 59;
     const int cells = (20 / Background::kScale) * (20 / Background::kScale);
@@ -106,7 +112,7 @@ START_TEST(every_column_is_modelled)
             for (int r = 10; r < 30; r++)
                 for (int c = x0; c < x0 + 12; c++)
                     y[r * w + c] = 220;
-            bg.apply(p, nullptr, 0);
+            bg.apply(at(k), p, nullptr, 0);
         }
         ck_assert_int_eq(bg.width(), 83);
         for (int c = (w - 12) / 2; c < 83; c++) {
@@ -131,11 +137,11 @@ START_TEST(ghosts_have_their_edges_in_the_model)
     for (int k = 0; k < 300; k++) { // long enough for the model to learn it
         g.fill(100);
         g.square(20, 40, 20, 200);
-        bg.apply(g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), nullptr, 0);
     }
     g.fill(100);
     g.square(100, 40, 20, 200); // it left, and another arrived
-    bg.apply(g.planes(), nullptr, 0);
+    bg.apply(at(300), g.planes(), nullptr, 0);
     const int s = Background::kScale;
     std::vector<uint8_t> blob(bg.mask(), bg.mask() + bg.width() * bg.height());
     const Rect ghost{20 / s, 40 / s, 40 / s, 60 / s}, real{100 / s, 40 / s, 120 / s, 60 / s};
@@ -150,7 +156,7 @@ START_TEST(ghosts_have_their_edges_in_the_model)
     ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0);
     g.fill(100);
     g.square(102, 40, 20, 200);
-    bg.apply(g.planes(), nullptr, 0);
+    bg.apply(at(301), g.planes(), nullptr, 0);
     ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0); // and stays learnt
     ck_assert_int_ge(foreground_in(bg, 102, 40, 122, 60), 90);
 }
@@ -169,7 +175,7 @@ START_TEST(stopped_person_under_a_track_is_not_absorbed)
             g.square(x, 40, 20, 200);
             Rect r{x / Background::kScale - 1, 40 / Background::kScale - 1,
                    (x + 20) / Background::kScale + 1, 60 / Background::kScale + 1};
-            bg.apply(g.planes(), &r, frozen);
+            bg.apply(at(k), g.planes(), &r, frozen);
         }
         const int cells = (20 / Background::kScale) * (20 / Background::kScale);
         int fg = foreground_in(bg, 70, 40, 90, 60);
@@ -189,7 +195,7 @@ START_TEST(slow_lighting_ramp_is_absorbed)
     int most = 0;
     for (int k = 0; k < 240; k++) {
         g.fill(60 + k / 4);
-        bg.apply(g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), nullptr, 0);
         if (k > 20)
             most = std::max(most, foreground_in(bg, 0, 0, W, H));
     }
@@ -206,9 +212,61 @@ START_TEST(no_lasting_ghost_from_the_first_frame)
     for (int k = 0; k < 40; k++) {
         g.fill(100);
         g.square(10 + 3 * k, 40, 20, 200); // there in frame 1
-        bg.apply(g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), nullptr, 0);
     }
     ck_assert_int_eq(foreground_in(bg, 10, 40, 30, 60), 0); // where it stood
+}
+END_TEST
+
+// The model's start lasts the same time at any frame rate, not the same
+// number of frames: at 7 and at 25 frames/s, a square there in the first
+// frame that walks away (100 pixels a second) leaves no ghost one second
+// later, and a square that arrives after 1 second and stands is still
+// foreground 0.3 seconds after (counted in frames, the start lasted 1.7
+// seconds at 7 frames/s and learnt it at once).
+START_TEST(start_lasts_the_same_time_at_any_frame_rate)
+{
+    for (const double fps : {7.0, 25.0}) {
+        Background bg;
+        Gray g;
+        int k = 0;
+        for (; k / fps < 1.0; k++) {
+            g.fill(100);
+            g.square(10 + (int)(100 * k / fps), 40, 20, 200);
+            bg.apply(at(k, fps), g.planes(), nullptr, 0);
+        }
+        ck_assert_msg(foreground_in(bg, 10, 40, 30, 60) == 0, "%g frames/s: a ghost at 1 s",
+                      fps);
+        for (; k / fps < 1.3; k++) {
+            g.fill(100);
+            g.square(120, 80, 20, 150);
+            bg.apply(at(k, fps), g.planes(), nullptr, 0);
+        }
+        const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+        const int fg = foreground_in(bg, 120, 80, 140, 100);
+        ck_assert_msg(fg >= cells * 9 / 10, "%g frames/s: %d of %d foreground 0.3 s after", fps,
+                      fg, cells);
+    }
+}
+END_TEST
+
+// Timestamps far apart (the extremes of int64_t) do not overflow: the
+// start ends, and a square that arrives then is foreground (a difference
+// that wrapped round would read as still starting, and learn it at once).
+START_TEST(start_with_timestamps_far_apart)
+{
+    Background bg;
+    Gray g;
+    const int64_t ts[] = {INT64_MIN, INT64_MIN + 40000, 0, INT64_MAX};
+    for (int k = 0; k < 4; k++) {
+        g.fill(100);
+        if (k == 3)
+            g.square(120, 80, 20, 200);
+        bg.apply(ts[k], g.planes(), nullptr, 0);
+    }
+    const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+    ck_assert_int_ge(foreground_in(bg, 120, 80, 140, 100), cells * 9 / 10);
+    ck_assert_int_eq(foreground_in(bg, 0, 0, 100, H), 0);
 }
 END_TEST
 
@@ -542,6 +600,8 @@ int main(int argc, char **argv)
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
+    tcase_add_test(tc, start_lasts_the_same_time_at_any_frame_rate);
+    tcase_add_test(tc, start_with_timestamps_far_apart);
     tcase_add_test(tc, fragments_merge_and_groups_split);
     tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, pair_splits_between_heads);

@@ -30,7 +30,7 @@ extern "C" {
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
 #define CT_VERSION_MINOR 6
-#define CT_VERSION_PATCH 1
+#define CT_VERSION_PATCH 2
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
 #define CT_ABI_VERSION 1
@@ -223,7 +223,8 @@ typedef struct ct_frame {
     int32_t strides[3];
     /* Capture time in microseconds; must increase from one feed to the
      * next. Motion is predicted from it, so dropped frames and variable
-     * frame rates are handled. */
+     * frame rates are handled; with pixels, the background model's start
+     * (its first 0.46 s) is timed by it as well (0.6.2). */
     int64_t timestamp_us;
 } ct_frame;
 
