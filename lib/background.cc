@@ -1,10 +1,10 @@
 #include "background.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
+#include "clock.h"
 #include "mask.h"
 
 namespace ctrack {
@@ -21,19 +21,20 @@ constexpr int kVMin = 25, kVMax = 80;
 // time, not in frames: a 7 frames/s camera starts as a 25 frames/s one does.
 // At 25 frames/s it is 12 frames of 8 levels (the bound falls between two
 // frames, so that a timestamp's jitter does not add one). Counted in
-// frames (12 of 8 levels), PETS09-S2L1 (7 frames/s) kept its model fast for
-// 1.7 s: pixels only, MOTA 63.4 / IDF1 71.6, now 65.5 / 74.3 (docs/tuning.md).
+// frames, PETS09-S2L1 (7 frames/s) kept its model fast for 1.7 s and learnt
+// people who had just come in (docs/tuning.md).
 constexpr int64_t kWarmupUs = 460000;
 constexpr int kWarmupRate = 200;
 // The first frame has no interval behind it: it counts as one of 25
 // frames/s.
 constexpr int64_t kFirstFrameUs = 40000;
 
-// The warm-up's step for a frame interval_us after the last one (timestamps
-// increase, but their difference may be anything up to 2^64 - 1).
+// The start's step for a frame interval_us after the last one (up to 2^64
+// - 1: past 1.3 s the step is 255 anyway).
 int warmup_step(uint64_t interval_us)
 {
-    const uint64_t levels = (kWarmupRate * std::min<uint64_t>(interval_us, 10000000) + 500000) / 1000000;
+    const uint64_t levels =
+        (kWarmupRate * std::min<uint64_t>(interval_us, 10000000) + 500000) / 1000000;
     return (int)std::min<uint64_t>(255, std::max<uint64_t>(1, levels));
 }
 
@@ -193,11 +194,9 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     }
     if (restart)
         start_us_ = last_us_ = t_us;
-    // Differences of increasing timestamps, in unsigned arithmetic: they
-    // cannot overflow.
-    const bool warm = (uint64_t)t_us - (uint64_t)start_us_ < (uint64_t)kWarmupUs;
+    const bool warm = elapsed_us(t_us, start_us_) < (uint64_t)kWarmupUs;
     const int step =
-        warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : (uint64_t)t_us - (uint64_t)last_us_) : 1;
+        warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : elapsed_us(t_us, last_us_)) : 1;
     last_us_ = t_us;
     // While warming up, V moves as fast as M, and also where M has reached
     // the image: else V stays near kVMax, where it starts, for some 50

@@ -122,7 +122,7 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
             t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
-        if ((double)(t_us - t.last_update_us) * 1e-6 > cfg_.mean_shift_max_time)
+        if (elapsed_s(t_us, t.last_update_us) > cfg_.mean_shift_max_time)
             continue;
         // Behind another person the window sees the occluder: coast instead.
         if (occluded(i))
@@ -315,7 +315,7 @@ void Engine::reidentify(const ct_detection *dets)
     cost_.resize((size_t)n * m);
     for (int i = 0; i < n; i++) {
         const Track &t = tracks_[pool_tracks_[i]];
-        const double lost_s = (double)(last_us_ - t.last_update_us) * 1e-6;
+        const double lost_s = elapsed_s(last_us_, t.last_update_us);
         // The size the person had when last seen: the coasted one drifts.
         const double h = std::max<double>(t.seen_h, kMinSide);
         const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
@@ -358,7 +358,7 @@ void Engine::learn_templates(int64_t t_us)
         Track &t = tracks_[i];
         if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0 || t.last_update_us != t_us)
             continue;
-        if (t.tmpl >= 0 && ((double)(t_us - t.tmpl_us) * 1e-6 < kTemplateRefresh || occluded(i)))
+        if (t.tmpl >= 0 && (elapsed_s(t_us, t.tmpl_us) < kTemplateRefresh || occluded(i)))
             continue;
         while (slot < slot_used_.size() && slot_used_[slot])
             slot++;
@@ -550,7 +550,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     const bool pixels = cfg_.mean_shift && !img.empty();
     appearance_ = cfg_.appearance && !img.empty();
     const bool first = !has_time_;
-    const double dt = first ? 0.0 : (double)(t_us - last_us_) * 1e-6;
+    const double dt = first ? 0.0 : elapsed_s(t_us, last_us_);
     last_us_ = t_us;
     has_time_ = true;
 
@@ -637,7 +637,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
                 keep = false;
             } else {
                 t.state = CT_TRACK_LOST;
-                double since = (double)(t_us - t.last_update_us) * 1e-6;
+                double since = elapsed_s(t_us, t.last_update_us);
                 Box b = t.box();
                 bool outside = image.known() &&
                     (b.left >= image.width || b.top >= image.height ||
@@ -704,7 +704,7 @@ void Engine::report(int64_t t_us, ImageSize image)
     for (const Track &t : tracks_) {
         if (t.state == CT_TRACK_TENTATIVE)
             continue;
-        double since = (double)(t_us - t.last_update_us) * 1e-6;
+        double since = elapsed_s(t_us, t.last_update_us);
         if (t.state == CT_TRACK_LOST && since > cfg_.report_lost_time)
             continue;
         Box b = t.box();

@@ -299,6 +299,47 @@ START_TEST(timestamp_must_increase)
 }
 END_TEST
 
+/* Timestamps at the ends of int64_t, with detections and with frames: the
+ * time between two of them does not fit in an int64_t. The steps succeed,
+ * every reported number is finite, and the gap of 2^64 microseconds
+ * (585,000 years) is longer than any track is kept: the track of before is
+ * not reported after it (a difference that wrapped round read as -0.08 s
+ * and continued it). */
+START_TEST(extreme_timestamps)
+{
+    const int64_t ts[] = {INT64_MIN, INT64_MIN + 40000, INT64_MAX - 40000, INT64_MAX};
+    for (int pixels = 0; pixels < 2; pixels++) {
+        ct_tracker *t = test_tracker(NULL);
+        for (int k = 0; k < 4; k++) {
+            ct_frame f = test_frame(ts[k], 0, 0);
+            if (pixels)
+                make_i420(&f);
+            ct_detection d = test_det(10 + 2 * k, 10, 20, 40, 0.9f);
+            ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_OK);
+            ct_track out[16];
+            size_t n = 0;
+            ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof out[0], &n), CT_OK);
+            if (k < 2)
+                ck_assert_uint_eq(n, 1);
+            for (size_t i = 0; i < n; i++) {
+                const float v[] = {out[i].left, out[i].top, out[i].width, out[i].height,
+                                   out[i].barycenter_x, out[i].barycenter_y, out[i].velocity_x,
+                                   out[i].velocity_y, out[i].confidence};
+                for (size_t j = 0; j < sizeof v / sizeof v[0]; j++)
+                    ck_assert_msg(isfinite(v[j]), "step %d (pixels %d), track %zu: value %zu is %g",
+                                  k, pixels, i, j, (double)v[j]);
+                ck_assert(isfinite(out[i].time_since_update) && out[i].time_since_update >= 0);
+                ck_assert(out[i].confidence >= 0 && out[i].confidence <= 1);
+                if (k >= 2)
+                    ck_assert_msg(out[i].id != 1, "step %d (pixels %d): track 1 continued", k,
+                                  pixels);
+            }
+        }
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
 START_TEST(reset_forgets_time_and_tracks)
 {
     ct_tracker *t = test_tracker(NULL);
@@ -379,6 +420,7 @@ static Suite *api_suite(void)
     tcase_add_test(tc, null_detections_with_count);
     tcase_add_test(tc, absurd_detection_count);
     tcase_add_test(tc, timestamp_must_increase);
+    tcase_add_test(tc, extreme_timestamps);
     tcase_add_test(tc, reset_forgets_time_and_tracks);
     tcase_add_test(tc, stats);
     suite_add_tcase(s, tc);
