@@ -216,7 +216,12 @@ class Tracker:
             ts = float(timestamp)
             if not math.isfinite(ts):
                 raise ValueError("timestamp: %r is not finite" % (timestamp,))
-        f.timestamp_us = int(round(ts * 1e6))
+        us = int(round(ts * 1e6))
+        if not -2**63 <= us < 2**63:
+            # ctypes would wrap it round silently
+            raise ValueError("timestamp: %r s is outside int64 microseconds "
+                             "(about +-292,000 years)" % (ts,))
+        f.timestamp_us = us
         ptr = dets.ctypes.data if len(dets) else None
         self._check(self._lib.ct_tracker_feed(t, ctypes.byref(f), ptr, len(dets)))
         del keep

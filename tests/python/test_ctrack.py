@@ -117,6 +117,10 @@ def test_timestamps():
         assert e.value.status == -5
         with pytest.raises(ValueError, match="timestamp"):
             t.feed(None, None, timestamp=float("nan"))
+        for far in (1e13, -1e13):  # beyond int64 microseconds: refused, not wrapped
+            with pytest.raises(ValueError, match="outside int64"):
+                t.feed(None, None, timestamp=far)
+        t.feed(None, None, timestamp=9.2e12)  # the largest that fits, nearly
         t.reset()
         assert len(t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=0.0)) == 1
 
