@@ -60,7 +60,7 @@ template <typename T> inline T step_toward(T m, T target, int step)
 }
 
 struct Rates {
-    int step, vstep;
+    int step; // levels a frame, for M, the chroma and V alike
     bool warm;
 };
 
@@ -71,7 +71,7 @@ template <typename T> inline T luma(T I, T &M, T &V, T live, const Rates &r)
     const T Mn = live ? step_toward(M, I, r.step) : M;
     const T D = vabs(I - Mn);
     const T learn = live & ((D != splat<T>(0)) | splat<T>(r.warm ? -1 : 0));
-    const T Vt = V + (splat<T>(kN) * D > V ? splat<T>(r.vstep) : splat<T>(-r.vstep));
+    const T Vt = V + (splat<T>(kN) * D > V ? splat<T>(r.step) : splat<T>(-r.step));
     V = learn ? vmin(splat<T>(kVMax), vmax(splat<T>(kVMin), Vt)) : V;
     M = Mn;
     return D > V;
@@ -202,7 +202,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     // the image: else V stays near kVMax, where it starts, for some 50
     // frames, and hides people with the background's contrast (TUD-Campus,
     // pixels only: recall 15% -> 39%, MOTA -3 -> 20).
-    const Rates rates{step, step, warm};
+    const Rates rates{step, warm};
     const int cs = kScale / 2; // working pixel to chroma sample
     // Locals and restrict pointers: stores through uint8_t pointers may
     // alias anything, and would make the compiler reload every member after
