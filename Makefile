@@ -4,7 +4,7 @@ BUILD ?= build
 MESON_OPTS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps check demo install clean eval bench
+.PHONY: all deps check demo install clean eval bench sanitize
 
 # Every verb first installs the Debian packages that are missing (a quick
 # dpkg query when nothing is).
@@ -24,11 +24,23 @@ check: all
 demo: all
 	tools/demo.sh $(BUILD)
 
+# The C suites, the CLI and the real-data replay again, built with
+# AddressSanitizer and UndefinedBehaviorSanitizer, which stop at their first
+# report (the Python and install tests load or link the library without
+# them, so they run in `make check` only).
+SANITIZE_BUILD ?= build-sanitize
+sanitize: deps
+	@[ -f $(SANITIZE_BUILD)/build.ninja ] || meson setup $(SANITIZE_BUILD) \
+	    -Db_sanitize=address,undefined -Dbuildtype=debugoptimized $(MESON_OPTS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	    meson test -C $(SANITIZE_BUILD) --suite lib --suite cli --suite replay --print-errorlogs
+
 install: all
 	meson install -C $(BUILD)
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD)
 
 # Both run in their own venv (tools/venv.sh eval), created on first use.
 eval: all

@@ -120,7 +120,8 @@ int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len
         snprintf(err, err_len, "cannot read detections '%s': %s", path, strerror(errno));
         goto out;
     }
-    qsort(list, count, sizeof *list, by_frame);
+    if (count) /* qsort's pointer must not be NULL, even for no elements */
+        qsort(list, count, sizeof *list, by_frame);
     out->dets = malloc((count ? count : 1) * sizeof *out->dets);
     out->frames = malloc((count ? count : 1) * sizeof *out->frames);
     if (!out->dets || !out->frames) {
