@@ -102,6 +102,10 @@ constexpr RegionCells make_region_cells()
 
 constexpr RegionCells kRegionCells = make_region_cells();
 
+// The head's rows (the median of eight rows is the fifth smallest: an
+// upper median).
+constexpr int kHeadRows = kZones[kHead].row1 - kZones[kHead].row0;
+
 const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "back",
                                       "abdomen", "buttocks", "upper limbs", "lower limbs"};
 
@@ -313,6 +317,26 @@ void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, S
     outline_of(mask, stride, x0, y0, x1, y1, &s->outline);
 }
 
+float top_width(const Profile &p)
+{
+    float head[kHeadRows];
+    for (int r = 0; r < kHeadRows; r++)
+        head[r] = p.extent(r);
+    std::nth_element(head, head + kHeadRows / 2, head + kHeadRows);
+    const float top = head[kHeadRows / 2];
+    float body = 0;
+    int present = 0;
+    const int r0 = kZones[kShoulders].row0, r1 = kZones[kButtocks].row1;
+    for (int r = r0; r < r1; r++) {
+        body = std::max(body, p.extent(r));
+        present += !p.empty(r);
+    }
+    // Like a region, the body abstains when fewer than half its rows hold
+    // foreground (hidden, or in pieces that the fragments' merging did not
+    // join): then no comparison.
+    return 2 * present >= r1 - r0 && body > 0 ? top / body : 0;
+}
+
 Vote classify(const Shape &shape, const RegionThresholds &th)
 {
     const Profile &p = shape.profile;
@@ -371,6 +395,12 @@ Vote classify(const Shape &shape, const RegionThresholds &th)
     // whatever its regions say.
     best.fill = p.fill;
     if (best.fill > th.max_fill)
+        best.score = std::min(best.score, 0.5f);
+    // A person's head is narrower than their body. A blob whose top rows
+    // are as wide as its body has no head on top: a T, an H, a Π, an X, a
+    // Y, a U. (A person under an open umbrella has a T's outline too.)
+    best.top = top_width(p);
+    if (best.top > kMaxTopWidth)
         best.score = std::min(best.score, 0.5f);
     return best;
 }

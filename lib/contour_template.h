@@ -29,6 +29,9 @@ struct Profile {
     // contour, holes included (a ring fills its hull as a disc does).
     float fill;
     bool empty(int row) const { return edge[row][0] == kEmpty; }
+    // The row's extent, leftmost to rightmost foreground point (0 when the
+    // row is empty), in box heights.
+    float extent(int row) const { return empty(row) ? 0 : edge[row][1] - edge[row][0]; }
 };
 
 // A blob's outline as a distance map on a kGrid x kGrid canvas of the
@@ -68,11 +71,23 @@ struct Vote {
     int yes = 0, voters = 0;
     // yes / voters, 0 with fewer than kMinVoters voters, at most 0.5 (no
     // pedestrian) when the blob fills more than RegionThresholds::max_fill
-    // of its convex hull.
+    // of its convex hull or its top is wider than kMaxTopWidth of its body.
     float score = 0;
     int silhouette = -1;
     float fill = 0;  // Profile::fill
+    float top = 0;   // top_width()
 };
+
+// How wide the blob's top is against its body: the median extent of the
+// head's rows (an empty row counts 0) over the widest row from the
+// shoulders to the hips (0 when those rows are empty). A person's head is
+// narrower than their shoulders and arms: about 0.2 for the library's
+// silhouettes. A T, an H, a Π, an X, a Y, a V or a U reach 1.
+float top_width(const Profile &p);
+
+// The widest top a pedestrian's blob has (top_width()): above it the vote's
+// score is cut to 0.5, as for a blob that fills its hull.
+constexpr float kMaxTopWidth = 0.9f;
 
 // The thresholds of eq. (1)'s regions: a region votes yes when its distance
 // is at most its threshold.

@@ -429,6 +429,7 @@ ct_candidate Engine::vote_on(Rect r, float left, float top, float width, float h
     for (int g = 0; g < kRegions; g++)
         c.region_distance[g] = v.distance[g];
     c.fill = v.fill;
+    c.top_width = v.top;
     return c;
 }
 

@@ -377,10 +377,22 @@ START_TEST(pixels_alone)
         ck_assert_uint_eq(n_old, nc);
         for (size_t i = 0; i < nc; i++) {
             ck_assert_mem_eq(packed + i * old, &now[i], old);
-            /* The fill is a fraction, and a blob has some. */
+            /* The fill is a fraction, and a blob has some; the top's width
+             * is a ratio, 0 when the body's rows are too few to compare. */
             ck_assert(now[i].fill > 0 && now[i].fill <= 1);
+            ck_assert(now[i].top_width >= 0 && now[i].top_width < 10);
         }
         for (size_t i = nc * old; i < sizeof packed; i++)
+            ck_assert_uint_eq(packed[i], 0xAB);
+        /* A 0.6 header's ct_candidate ended with fill. */
+        const size_t v06 = offsetof(ct_candidate, top_width);
+        memset(packed, 0xAB, sizeof packed);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, (ct_candidate *)(void *)packed, nc, v06,
+                                                   &n_old),
+                         CT_OK);
+        for (size_t i = 0; i < nc; i++)
+            ck_assert_mem_eq(packed + i * v06, &now[i], v06);
+        for (size_t i = nc * v06; i < sizeof packed; i++)
             ck_assert_uint_eq(packed[i], 0xAB);
         ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, old - 1, &n_old),
                          CT_ERROR_INVALID_ARGUMENT);

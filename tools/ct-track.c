@@ -94,8 +94,9 @@ static void usage(FILE *out)
             "  -q, --quiet            no progress\n"
             "      --stats            print the library's time per stage at the end\n"
             "      --candidates FILE  without --detections: write the blobs found in the\n"
-            "                         pixels, their contour-template vote and eq. (1)'s\n"
-            "                         distance per region, one line per blob and frame\n"
+            "                         pixels, their contour-template vote, eq. (1)'s\n"
+            "                         distance per region, their fill and top width, one\n"
+            "                         line per blob and frame\n"
             "  -h, --help             this help\n"
             "  -V, --version          print the version\n"
             "\n"
@@ -337,7 +338,7 @@ int main(int argc, char **argv)
             goto done;
         }
         fprintf(cand_out, "# frame,left,top,width,height,score,yes,voters,head,neck,shoulders,"
-                          "chest,back,abdomen,buttocks,upper_limbs,lower_limbs,fill\n");
+                          "chest,back,abdomen,buttocks,upper_limbs,lower_limbs,fill,top_width\n");
     }
     out = out_path ? fopen(out_path, "w") : stdout;
     if (!out) {
@@ -438,7 +439,7 @@ int main(int argc, char **argv)
                         c->width, c->height, c->score, (int)c->votes_yes, (int)c->voters);
                 for (int g = 0; g < CT_REGIONS; g++)
                     fprintf(cand_out, ",%.4f", c->region_distance[g]);
-                fprintf(cand_out, ",%.3f\n", c->fill);
+                fprintf(cand_out, ",%.3f,%.3f\n", c->fill, c->top_width);
             }
         }
         for (size_t i = 0; i < count; i++) {

@@ -29,8 +29,8 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 6
-#define CT_VERSION_PATCH 2
+#define CT_VERSION_MINOR 7
+#define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
 #define CT_ABI_VERSION 1
@@ -304,7 +304,8 @@ typedef struct ct_candidate {
     float left, top, width, height; /* pixels */
     /* The contour template's vote: yes votes over voting regions (0 with
      * fewer than 5 voters; at most 0.5, not a pedestrian, when the blob
-     * fills more of its convex hull than a walking person does, 0.6.0);
+     * fills more of its convex hull than a walking person does, 0.6.0, or
+     * its top is as wide as its body, 0.7.0: see top_width);
      * candidates feed the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
@@ -320,6 +321,14 @@ typedef struct ct_candidate {
      * a caller built against an older one passes the smaller size and gets
      * the fields above. */
     float fill;
+    /* How wide the blob's top is against its body (0.7.0): the median width
+     * of the head's rows (the top eighth of the box; an empty row counts 0)
+     * over the widest row from the shoulders to the hips, 0 when fewer than
+     * half of those rows hold foreground. About 0.2 for a person, whose
+     * head is narrower than their shoulders; 1 or more for a T, an H, a Y.
+     * Above 0.9 the score is at most 0.5, as for a blob that fills its
+     * hull. */
+    float top_width;
 } ct_candidate;
 
 /* Copies the candidates of the last step, like ct_tracker_get_tracks() (in

@@ -248,7 +248,8 @@ class Tracker:
         """From the pixels alone (source=SOURCE_PIXELS): the blobs of the
         last step, a numpy structured array (CANDIDATE_DTYPE: the box, the
         contour template's score and votes, region_distance per region, and
-        fill: how much of its convex hull the blob fills).
+        fill: how much of its convex hull the blob fills, and top_width: how
+        wide its top is against its body).
         With detections and verify_detections=1: one vote per detection of
         the last step, in their order."""
         t = self._handle()

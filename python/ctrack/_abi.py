@@ -122,6 +122,7 @@ class Candidate(C.Structure):
         ("voters", C.c_int32),
         ("region_distance", C.c_float * REGIONS),
         ("fill", C.c_float),
+        ("top_width", C.c_float),
     ]
 
 

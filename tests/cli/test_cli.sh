@@ -104,7 +104,7 @@ else
     # From the pixels alone: tracks, and the candidates with their votes.
     expect "pixels only" 0 "" -- "$ct" -q -o "$tmp/px.txt" --candidates "$tmp/cand.txt" "$tmp/tud.y4m"
     [ -s "$tmp/px.txt" ] && ok "pixels only writes tracks" || bad "pixels only writes tracks" "no tracks"
-    if awk -F, '!/^#/ && (NF != 18 || $1 < 1 || $1 > 71 || $4 <= 0 || $5 <= 0 || $6 < 0 || $6 > 1 || $18 < 0 || $18 > 1) {exit 1}' "$tmp/cand.txt" \
+    if awk -F, '!/^#/ && (NF != 19 || $1 < 1 || $1 > 71 || $4 <= 0 || $5 <= 0 || $6 < 0 || $6 > 1 || $18 < 0 || $18 > 1 || $19 < 0 || ($19 > 0.9 && $6 > 0.5)) {exit 1}' "$tmp/cand.txt" \
         && [ "$(grep -vc '^#' "$tmp/cand.txt")" -gt 50 ]; then
         ok "candidates file"
     else

@@ -52,6 +52,7 @@ int main(void)
     FIELD(ct_candidate, height); FIELD(ct_candidate, score); FIELD(ct_candidate, votes_yes);
     FIELD(ct_candidate, voters); FIELD(ct_candidate, region_distance);
     FIELD(ct_candidate, fill);
+    FIELD(ct_candidate, top_width);
     printf("}}\n");
     return 0;
 }

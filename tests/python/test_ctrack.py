@@ -200,9 +200,10 @@ def test_pixels_alone_on_real_frames():
             c = t.candidates()
             seen += len(c)
             assert set(c.dtype.names) >= {"left", "score", "votes_yes", "voters",
-                                          "region_distance", "fill"}
+                                          "region_distance", "fill", "top_width"}
             assert np.all((c["score"] >= 0) & (c["score"] <= 1))
             assert np.all((c["fill"] >= 0) & (c["fill"] <= 1))
+            assert np.all(c["top_width"] >= 0)
         with pytest.raises(ctrack.CtrackError, match="CT_SOURCE_PIXELS"):
             t.feed(frames[0], [[10, 10, 20, 40, 0.9]], format="i420")
     assert seen > 20
