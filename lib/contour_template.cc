@@ -324,16 +324,19 @@ float top_width(const Profile &p)
         head[r] = p.extent(r);
     std::nth_element(head, head + kHeadRows / 2, head + kHeadRows);
     const float top = head[kHeadRows / 2];
+    // The body from the shoulders down: a person seen from the side has a
+    // head as wide as their torso at the working scale, but legs in stride
+    // wider than both.
     float body = 0;
-    int present = 0;
-    const int r0 = kZones[kShoulders].row0, r1 = kZones[kButtocks].row1;
-    for (int r = r0; r < r1; r++) {
+    for (int r = kZones[kShoulders].row0; r < kRows; r++)
         body = std::max(body, p.extent(r));
-        present += !p.empty(r);
-    }
-    // Like a region, the body abstains when fewer than half its rows hold
+    // Like a region, the torso abstains when fewer than half its rows hold
     // foreground (hidden, or in pieces that the fragments' merging did not
     // join): then no comparison.
+    int present = 0;
+    const int r0 = kZones[kShoulders].row0, r1 = kZones[kButtocks].row1;
+    for (int r = r0; r < r1; r++)
+        present += !p.empty(r);
     return 2 * present >= r1 - r0 && body > 0 ? top / body : 0;
 }
 

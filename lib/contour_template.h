@@ -80,8 +80,9 @@ struct Vote {
 
 // How wide the blob's top is against its body: the median extent of the
 // head's rows (an empty row counts 0) over the widest row from the
-// shoulders to the hips (0 when those rows are empty). A person's head is
-// narrower than their shoulders and arms: about 0.2 for the library's
+// shoulders to the feet; 0 when fewer than half the rows from the shoulders
+// to the hips hold foreground. A person's head is narrower than their
+// shoulders, arms or legs in stride: about 0.15 for the library's
 // silhouettes. A T, an H, a Π, an X, a Y, a V or a U reach 1.
 float top_width(const Profile &p);
 

@@ -323,11 +323,12 @@ typedef struct ct_candidate {
     float fill;
     /* How wide the blob's top is against its body (0.7.0): the median width
      * of the head's rows (the top eighth of the box; an empty row counts 0)
-     * over the widest row from the shoulders to the hips, 0 when fewer than
-     * half of those rows hold foreground. About 0.2 for a person, whose
-     * head is narrower than their shoulders; 1 or more for a T, an H, a Y.
-     * Above 0.9 the score is at most 0.5, as for a blob that fills its
-     * hull. */
+     * over the widest row from the shoulders (11/64 of the box's height
+     * down) to the feet; 0 when fewer than half the rows from the shoulders
+     * to the hips hold foreground. About 0.15
+     * for a person, whose head is narrower than their shoulders, arms or
+     * legs in stride; 1 or more for a T, an H, a Y. Above 0.9 the score is
+     * at most 0.5, as for a blob that fills its hull. */
     float top_width;
 } ct_candidate;
 
