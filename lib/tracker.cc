@@ -480,8 +480,9 @@ void Engine::verify_detections(const Planes &img, const ct_detection *dets, size
                                        d.top, d.width, d.height);
         candidates_.push_back(c);
         ct_detection v = d;
-        // Rejected: enough regions voted, and no majority said pedestrian or
-        // the foreground fills its convex hull (score at most 0.5).
+        // Rejected: enough regions voted, and no majority said pedestrian,
+        // or the foreground fills its convex hull or has no head on top
+        // (score at most 0.5).
         if (c.voters >= kMinVoters && c.score <= 0.5f)
             v.score *= c.score;
         cand_dets_.push_back(v);
