@@ -340,6 +340,121 @@ START_TEST(extreme_timestamps)
 }
 END_TEST
 
+/* A fixed-seed stream of calls, good and bad mixed as a careless host would
+ * make them: configurations (with pixels or not, mean shift, appearance and
+ * verification on or off, few tracks allowed), frame sizes from 1 x 1 up,
+ * strides past the width, every format, timestamps that sometimes go back,
+ * detections with NaN, infinite, huge, negative or empty boxes, buffers too
+ * small. Every call must return a status, a failed one with a message, and
+ * what comes out must keep the header's promises. Under `make sanitize` this
+ * is also a memory and undefined-behaviour check of every path. */
+static uint64_t lcg_state;
+
+static uint32_t lcg(void)
+{
+    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (uint32_t)(lcg_state >> 33);
+}
+
+static float odd_float(void)
+{
+    static const float odd[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f, 0, -1, 1e-40f};
+    return lcg() % 3 ? (float)(lcg() % 2000) / 10 - 20 : odd[lcg() % 8];
+}
+
+START_TEST(random_calls_keep_their_promises)
+{
+    lcg_state = 2026;
+    static uint8_t buf[(200 + 16) * 160 * 2];
+    for (int run = 0; run < 24; run++) {
+        ct_config c = test_config();
+        c.source = (int32_t)(lcg() % 2);
+        c.mean_shift = (int32_t)(lcg() % 2);
+        c.appearance = (int32_t)(lcg() % 2);
+        c.verify_detections = c.source == CT_SOURCE_DETECTIONS ? (int32_t)(lcg() % 2) : 0;
+        c.max_tracks = lcg() % 3 ? 1000 : 1 + (int32_t)(lcg() % 3);
+        c.clip_boxes = (int32_t)(lcg() % 2);
+        ct_tracker *t = test_tracker(&c);
+        int w = 1 + (int)(lcg() % 200), h = 1 + (int)(lcg() % 160);
+        int64_t ts = (int64_t)(lcg() % 1000);
+        for (int k = 0; k < 30; k++) {
+            if (lcg() % 10 == 0) {
+                w = 1 + (int)(lcg() % 200);
+                h = 1 + (int)(lcg() % 160);
+            }
+            const int stride = w + (int)(lcg() % 3) * 8;
+            for (size_t i = 0; i < sizeof buf; i++)
+                buf[i] = (uint8_t)(60 + (i * 7 + (size_t)k * 13) % 40);
+            for (int y = h / 4; y < h / 4 + h / 2; y++) /* something moving */
+                for (int x = (k * 3) % w; x < w && x < (k * 3) % w + w / 6 + 1; x++)
+                    buf[(size_t)y * stride + x] = 230;
+            ct_frame f = test_frame(ts, w, h);
+            static const uint32_t formats[] = {CT_FORMAT_NONE, CT_FORMAT_I420, CT_FORMAT_NV12,
+                                               CT_FORMAT_GRAY8};
+            f.format = formats[lcg() % 4];
+            f.planes[0] = buf;
+            f.strides[0] = stride;
+            f.planes[1] = buf + (size_t)stride * h;
+            f.strides[1] = f.format == CT_FORMAT_NV12 ? stride + (stride & 1) : (w + 1) / 2;
+            f.planes[2] = f.planes[1] + (size_t)f.strides[1] * ((h + 1) / 2);
+            f.strides[2] = (w + 1) / 2;
+            if (lcg() % 25 == 0)
+                f.strides[lcg() % 3] = (int32_t)(lcg() % 3) - 1;
+            ts += lcg() % 25 == 0 ? -(int64_t)(lcg() % 100) : (int64_t)(lcg() % 200000);
+            f.timestamp_us = ts;
+            ct_detection d[8];
+            size_t n = c.source == CT_SOURCE_PIXELS && lcg() % 8 ? 0 : lcg() % 9;
+            for (size_t i = 0; i < n; i++)
+                d[i] = test_det(lcg() % 5 ? (float)(lcg() % (unsigned)(w + 20)) - 10 : odd_float(),
+                                lcg() % 5 ? (float)(lcg() % (unsigned)(h + 20)) - 10 : odd_float(),
+                                lcg() % 5 ? (float)(1 + lcg() % (unsigned)w) : odd_float(),
+                                lcg() % 5 ? (float)(1 + lcg() % (unsigned)h) : odd_float(),
+                                lcg() % 5 ? (float)(lcg() % 100) / 100 : odd_float());
+            const int st = ct_tracker_feed(t, &f, n ? d : NULL, n);
+            ck_assert_msg(st == CT_OK || st == CT_ERROR_INVALID_ARGUMENT ||
+                              st == CT_ERROR_BAD_STATE || st == CT_ERROR_UNSUPPORTED,
+                          "run %d step %d: status %d", run, k, st);
+            if (st != CT_OK)
+                ck_assert_msg(ct_tracker_last_error(t)[0] != '\0', "run %d step %d: no message",
+                              run, k);
+            ct_track out[8];
+            size_t cap = lcg() % 9, count = 0;
+            const int gt = ct_tracker_get_tracks(t, out, cap, sizeof out[0], &count);
+            ck_assert(gt == CT_OK || (gt == CT_ERROR_BUFFER_TOO_SMALL && count > cap));
+            ck_assert_uint_le(count, (size_t)c.max_tracks);
+            for (size_t i = 0; gt == CT_OK && i < count; i++) {
+                const ct_track *r = &out[i];
+                ck_assert(r->id > 0);
+                ck_assert(r->state == CT_TRACK_CONFIRMED || r->state == CT_TRACK_LOST);
+                ck_assert(isfinite(r->left) && isfinite(r->top) && isfinite(r->velocity_x) &&
+                          isfinite(r->velocity_y) && isfinite(r->barycenter_x) &&
+                          isfinite(r->barycenter_y));
+                ck_assert(r->width > 0 && r->height > 0 && isfinite(r->width) &&
+                          isfinite(r->height));
+                ck_assert(r->confidence >= 0 && r->confidence <= 1);
+                ck_assert(isfinite(r->time_since_update) && r->time_since_update >= 0);
+                for (size_t j = 0; j < i; j++)
+                    ck_assert(out[j].id != r->id);
+            }
+            ct_candidate cand[8];
+            cap = lcg() % 9;
+            const int gc = ct_tracker_get_candidates(t, cand, cap, sizeof cand[0], &count);
+            ck_assert(gc == CT_OK || (gc == CT_ERROR_BUFFER_TOO_SMALL && count > cap));
+            for (size_t i = 0; gc == CT_OK && i < count; i++) {
+                ck_assert(cand[i].score >= 0 && cand[i].score <= 1);
+                ck_assert(cand[i].voters >= 0 && cand[i].votes_yes >= 0 &&
+                          cand[i].votes_yes <= cand[i].voters && cand[i].voters <= CT_REGIONS);
+                ck_assert(cand[i].fill >= 0 && cand[i].fill <= 1);
+                ck_assert(isfinite(cand[i].top_width) && cand[i].top_width >= 0);
+            }
+            if (lcg() % 40 == 0)
+                ck_assert_int_eq(ct_tracker_reset(t), CT_OK);
+        }
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
 START_TEST(reset_forgets_time_and_tracks)
 {
     ct_tracker *t = test_tracker(NULL);
@@ -421,6 +536,7 @@ static Suite *api_suite(void)
     tcase_add_test(tc, absurd_detection_count);
     tcase_add_test(tc, timestamp_must_increase);
     tcase_add_test(tc, extreme_timestamps);
+    tcase_add_test(tc, random_calls_keep_their_promises);
     tcase_add_test(tc, reset_forgets_time_and_tracks);
     tcase_add_test(tc, stats);
     suite_add_tcase(s, tc);
