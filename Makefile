@@ -24,17 +24,19 @@ check: all
 demo: all
 	tools/demo.sh $(BUILD)
 
-# The C suites, the CLI and the real-data replay again, built with
-# AddressSanitizer and UndefinedBehaviorSanitizer, which stop at their first
-# report (the Python and install tests load or link the library without
-# them, so they run in `make check` only).
+# The C suites, the CLI, the Python tests and the real-data replay again,
+# built with AddressSanitizer and UndefinedBehaviorSanitizer, which stop at
+# their first report (Python runs with their runtimes preloaded; the install
+# test links without them, so it runs in `make check` only).
 SANITIZE_BUILD ?= build-sanitize
 sanitize: deps
 	@[ -f $(SANITIZE_BUILD)/build.ninja ] || meson setup $(SANITIZE_BUILD) \
 	    -Db_sanitize=address,undefined -Dbuildtype=debugoptimized $(MESON_OPTS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-	    meson test -C $(SANITIZE_BUILD) --suite lib --suite cli --suite replay --print-errorlogs
+	CTRACK_PRELOAD="$$($(CC) -print-file-name=libasan.so) $$($(CC) -print-file-name=libubsan.so)" \
+	    meson test -C $(SANITIZE_BUILD) --suite lib --suite cli --suite python --suite replay \
+	    --print-errorlogs
 
 install: all
 	meson install -C $(BUILD)
