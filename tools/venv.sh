@@ -17,6 +17,10 @@ else
     nodeps=
 fi
 stamp=$venv/.requirements
+# Tests run in parallel, and two of them may ask for the venv at once: the
+# second waits for the first to finish it (flock, util-linux).
+exec 9> "$venv.lock"
+flock 9
 if [ ! -x "$venv/bin/python" ] || ! cmp -s "$req" "$stamp"; then
     echo "venv: setting up $venv ($(basename "$req"))" >&2
     rm -rf "$venv"
