@@ -88,6 +88,9 @@ static void usage(FILE *out)
             "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
             "      --overlay FILE     also write the frames as Y4M with boxes, ids and trails\n"
             "                         drawn (grey frames with detections only)\n"
+            "      --overlay-candidates  also draw the blobs found in the pixels (or the\n"
+            "                         detections, with verify_detections=1) with the\n"
+            "                         contour template's score: white a pedestrian, red not\n"
             "  -p, --param NAME=VALUE set a tracker parameter (repeatable), see below\n"
             "      --progress         print progress on standard error (default when it is\n"
             "                         a terminal)\n"
@@ -194,8 +197,11 @@ int main(int argc, char **argv)
     uint32_t format = CT_FORMAT_I420;
     double fps = 0;
 
-    enum { OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES };
-    int stats = 0;
+    enum {
+        OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
+        OPT_OVERLAY_CANDIDATES
+    };
+    int stats = 0, overlay_candidates = 0;
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
         {"size", required_argument, NULL, 's'},
@@ -204,6 +210,7 @@ int main(int argc, char **argv)
         {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
         {"output", required_argument, NULL, 'o'},
         {"overlay", required_argument, NULL, OPT_OVERLAY},
+        {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
         {"param", required_argument, NULL, 'p'},
         {"progress", no_argument, NULL, OPT_PROGRESS},
         {"stats", no_argument, NULL, OPT_STATS},
@@ -245,6 +252,7 @@ int main(int argc, char **argv)
         case OPT_NO_PIXELS: no_pixels = 1; break;
         case 'o': out_path = optarg; break;
         case OPT_OVERLAY: overlay_path = optarg; break;
+        case OPT_OVERLAY_CANDIDATES: overlay_candidates = 1; break;
         case 'p':
             if (set_param(&cfg, optarg) < 0)
                 return EXIT_USAGE;
@@ -277,6 +285,11 @@ int main(int argc, char **argv)
         cfg.source = CT_SOURCE_PIXELS;
     }
 
+    if (overlay_candidates && !overlay_path) {
+        fprintf(stderr, "ct-track: --overlay-candidates draws on the overlay: give --overlay "
+                        "FILE\n");
+        return EXIT_USAGE;
+    }
     if (overlay_path && !strcmp(overlay_path, "-") && (!out_path || !strcmp(out_path, "-"))) {
         fprintf(stderr, "ct-track: --overlay - and the tracks cannot both go to standard "
                         "output; give -o FILE\n");
@@ -420,8 +433,8 @@ int main(int argc, char **argv)
                     ct_tracker_last_error(tracker));
             goto done;
         }
-        if (cand_out) {
-            size_t nc = 0;
+        size_t nc = 0;
+        if (cand_out || overlay_candidates) {
             st = ct_tracker_get_candidates(tracker, cands, cands_cap, sizeof *cands, &nc);
             if (st == CT_ERROR_BUFFER_TOO_SMALL) {
                 ct_candidate *nb = realloc(cands, nc * 2 * sizeof *nb);
@@ -433,7 +446,14 @@ int main(int argc, char **argv)
                 cands_cap = nc * 2;
                 st = ct_tracker_get_candidates(tracker, cands, cands_cap, sizeof *cands, &nc);
             }
-            for (size_t i = 0; st == CT_OK && i < nc; i++) {
+            if (st != CT_OK) {
+                fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
+                        ct_tracker_last_error(tracker));
+                goto done;
+            }
+        }
+        if (cand_out) {
+            for (size_t i = 0; i < nc; i++) {
                 const ct_candidate *c = &cands[i];
                 fprintf(cand_out, "%lld,%.0f,%.0f,%.0f,%.0f,%.3f,%d,%d", k, c->left, c->top,
                         c->width, c->height, c->score, (int)c->votes_yes, (int)c->voters);
@@ -448,7 +468,8 @@ int main(int argc, char **argv)
                     (unsigned long long)t->id, t->left, t->top, t->width, t->height,
                     t->confidence);
         }
-        if (overlay && ct_overlay_write(overlay, &picture, tracks, count, msg, sizeof msg) < 0) {
+        if (overlay && ct_overlay_write(overlay, &picture, tracks, count, cands,
+                                        overlay_candidates ? nc : 0, msg, sizeof msg) < 0) {
             fprintf(stderr, "ct-track: %s\n", msg);
             goto done;
         }

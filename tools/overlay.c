@@ -137,12 +137,14 @@ static void line(ct_overlay *ov, int x0, int y0, int x1, int y1, const uint8_t *
     }
 }
 
-static void label(ct_overlay *ov, int x, int y, uint64_t id, const uint8_t *c)
+static const uint8_t white[3] = {235, 128, 128};
+
+/* A number in white digits of `scale` pixels on a box of colour c. */
+static void label(ct_overlay *ov, int x, int y, uint64_t id, const uint8_t *c, int scale)
 {
     char s[24];
     int n = snprintf(s, sizeof s, "%llu", (unsigned long long)id);
-    const int scale = 2, cw = 4 * scale;
-    static const uint8_t white[3] = {235, 128, 128};
+    const int cw = 4 * scale;
     fill(ov, x, y, x + n * cw + scale, y + 7 * scale, c);
     for (int i = 0; i < n; i++)
         for (int r = 0; r < 5; r++)
@@ -150,6 +152,15 @@ static void label(ct_overlay *ov, int x, int y, uint64_t id, const uint8_t *c)
                 if (digits[s[i] - '0'][r] & (4 >> b))
                     fill(ov, x + scale + i * cw + b * scale, y + scale + r * scale,
                          x + scale + i * cw + (b + 1) * scale, y + scale + (r + 1) * scale, white);
+}
+
+/* The outline of the box [x0, x1) x [y0, y1), th pixels thick. */
+static void frame_box(ct_overlay *ov, int x0, int y0, int x1, int y1, int th, const uint8_t *c)
+{
+    fill(ov, x0, y0, x1, y0 + th, c);
+    fill(ov, x0, y1 - th, x1, y1, c);
+    fill(ov, x0, y0, x0 + th, y1, c);
+    fill(ov, x1 - th, y0, x1, y1, c);
 }
 
 static trail *trail_of(ct_overlay *ov, uint64_t id)
@@ -175,10 +186,21 @@ static int clampi(double v, int lo, int hi)
 }
 
 int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
-                     char *err, size_t err_len)
+                     const ct_candidate *cands, size_t nc, char *err, size_t err_len)
 {
     ov->frame++;
     copy_planes(ov, frame);
+    static const uint8_t red[3] = {82, 90, 240}, dark[3] = {16, 128, 128};
+    for (size_t i = 0; i < nc; i++) {
+        const ct_candidate *c = &cands[i];
+        const int x0 = clampi(c->left, -4, ov->w + 4), y0 = clampi(c->top, -4, ov->h + 4);
+        const int x1 = clampi(c->left + c->width, -4, ov->w + 4);
+        const int y1 = clampi(c->top + c->height, -4, ov->h + 4);
+        const int pedestrian = c->score > 0.5f;
+        frame_box(ov, x0, y0, x1, y1, 1, pedestrian ? white : red);
+        label(ov, x0, y1 + 1, (uint64_t)clampi(100.0 * c->score + 0.5, 0, 100),
+              pedestrian ? dark : red, 1);
+    }
     for (size_t i = 0; i < n; i++) {
         const ct_track *t = &tracks[i];
         const uint8_t *c = palette[t->id % 12];
@@ -198,11 +220,8 @@ int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *trac
         int x1 = clampi(t->left + t->width, -4, ov->w + 4);
         int y1 = clampi(t->top + t->height, -4, ov->h + 4);
         const int th = t->state == CT_TRACK_LOST ? 1 : 2; /* thin while predicted */
-        fill(ov, x0, y0, x1, y0 + th, c);
-        fill(ov, x0, y1 - th, x1, y1, c);
-        fill(ov, x0, y0, x0 + th, y1, c);
-        fill(ov, x1 - th, y0, x1, y1, c);
-        label(ov, x0, y0 - 14 >= 0 ? y0 - 14 : y0, t->id, c);
+        frame_box(ov, x0, y0, x1, y1, th, c);
+        label(ov, x0, y0 - 14 >= 0 ? y0 - 14 : y0, t->id, c, 2);
     }
     size_t bytes = (size_t)ov->w * ov->h + 2 * (size_t)ov->cw * ov->ch;
     if (fputs("FRAME\n", ov->f) == EOF || fwrite(ov->y, 1, bytes, ov->f) != bytes) {

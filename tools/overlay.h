@@ -15,9 +15,12 @@ ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int ra
                             char *err, size_t err_len);
 
 /* Writes one frame: `frame`'s pixels (or mid grey when it has none) with the
- * tracks drawn. Returns 0, or -1 with a message in err. */
+ * candidates (nc of them, may be 0) and the tracks drawn: each candidate a
+ * thin box, white when the contour template takes it for a pedestrian (score
+ * above 0.5), red when not, with its score in percent. Returns 0, or -1 with
+ * a message in err. */
 int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
-                     char *err, size_t err_len);
+                     const ct_candidate *cands, size_t nc, char *err, size_t err_len);
 
 /* Closes the file; returns -1 with a message if a write failed. */
 int ct_overlay_close(ct_overlay *ov, char *err, size_t err_len);

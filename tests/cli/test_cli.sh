@@ -129,6 +129,20 @@ else
         && ok "overlay header" || bad "overlay header" "$(head -n 1 "$tmp/ov.y4m")"
     [ "$(stat -c %s "$tmp/ov.y4m")" = "$(stat -c %s "$tmp/tud.y4m" | awk -v h="$(head -n 1 "$tmp/tud.y4m" | wc -c)" -v o="$(head -n 1 "$tmp/ov.y4m" | wc -c)" '{print $1 - h + o}')" ] \
         && ok "overlay has every frame" || bad "overlay has every frame" "sizes differ"
+    # The candidates drawn too: from the pixels alone there are some, so the
+    # frames differ; with detections only there are none to draw.
+    expect "overlay with candidates" 0 "" -- "$ct" -q -o /dev/null --overlay "$tmp/ovc.y4m" \
+        --overlay-candidates "$tmp/tud.y4m"
+    expect "overlay without candidates" 0 "" -- "$ct" -q -o /dev/null --overlay "$tmp/ovp.y4m" \
+        "$tmp/tud.y4m"
+    if cmp -s "$tmp/ovc.y4m" "$tmp/ovp.y4m"; then
+        bad "overlay draws the candidates" "same frames with and without"
+    else
+        ok "overlay draws the candidates"
+    fi
+    expect "overlay with candidates, detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" \
+        -o /dev/null --overlay "$tmp/ovd.y4m" --overlay-candidates "$tmp/tud.y4m"
+    same "no candidates to draw with detections" "$tmp/ovd.y4m" "$tmp/ov.y4m"
     expect "overlay of a grey video" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov-gray.y4m" -s 640x480 -f gray "$tmp/tud.gray"
     if cmp -s "$tmp/ov.y4m" "$tmp/tud.y4m"; then bad "overlay draws" "frames unchanged"; else ok "overlay draws"; fi
     expect "overlay from standard input to standard output" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -o '$tmp/t.txt' --overlay - - < '$tmp/tud.y4m' > '$tmp/ov2.y4m'"
@@ -194,6 +208,7 @@ expect "parameter NaN" 2 "high_score: 'nan' is not a number" -- "$ct" -d "$tud/d
 expect "parameter set" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -p min_hits=1 -p report_lost_time=0
 if cmp -s "$tmp/out" "$tmp/detonly.txt"; then bad "parameters change the result" "same tracks"; else ok "parameters change the result"; fi
 expect "overlay and tracks both on standard output" 2 "--overlay -" -- "$ct" -d "$tud/det/det.txt" --overlay -
+expect "candidates drawn on no overlay" 2 "--overlay FILE" -- "$ct" -d "$tud/det/det.txt" -s 640x480 --overlay-candidates
 expect "overlay without a size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" --overlay "$tmp/x.y4m"
 expect "overlay of detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 --overlay "$tmp/grey.y4m"
 [ "$(head -n 1 "$tmp/grey.y4m")" = "YUV4MPEG2 W640 H480 F25:1 Ip A1:1 C420jpeg" ] && ok "overlay of detections only header" || bad "overlay of detections only header" "$(head -n 1 "$tmp/grey.y4m")"
