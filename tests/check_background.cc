@@ -356,6 +356,13 @@ Shape shape_of(bool (*inside)(double u, double v), int w = 48, int h = 128)
 
 bool rectangle(double, double) { return true; }
 
+// A synthetic shape for the classifier's tests: its name, and whether the
+// point (u, v) of its box (both from 0 to 1) is inside.
+struct NamedShape {
+    const char *name;
+    bool (*inside)(double u, double v);
+};
+
 // A person walking, seen from the front: head, neck, shoulders and torso
 // with the arms beside it, the legs apart from the hips down.
 bool walking_person(double u, double v)
@@ -469,10 +476,7 @@ END_TEST
 // that still pass.
 START_TEST(hull_filling_non_human_shapes_are_rejected)
 {
-    struct {
-        const char *name;
-        bool (*inside)(double, double);
-    } shapes[] = {
+    const NamedShape shapes[] = {
         {"box", rectangle},
         {"ellipse",
          [](double u, double v) { return (u - .5) * (u - .5) + (v - .5) * (v - .5) <= .25; }},
@@ -504,10 +508,7 @@ END_TEST
 // (head as wide as the torso, legs in stride) pass, at both sizes.
 START_TEST(wide_topped_non_human_shapes_are_rejected)
 {
-    struct {
-        const char *name;
-        bool (*inside)(double, double);
-    } shapes[] = {
+    const NamedShape shapes[] = {
         {"T", [](double u, double v) { return v < 0.2 || std::fabs(u - .5) < 0.15; }},
         {"H", [](double u, double v) { return u < .25 || u > .75 || std::fabs(v - .5) < .08; }},
         {"Pi", [](double u, double v) { return v < .15 || u < .25 || u > .75; }},

@@ -360,40 +360,34 @@ START_TEST(pixels_alone)
     ck_assert_int_eq(ct_tracker_get_candidates(t, NULL, 0, sizeof cand[0], &nc),
                      CT_ERROR_BUFFER_TOO_SMALL);
     ck_assert_uint_ge(nc, 1);
-    /* A caller built against a 0.4.0 or 0.5.0 header (ct_candidate ended
-     * with region_distance) gets those fields, packed at its size, and
-     * nothing past them. */
+    /* A caller built against an older header gets the fields it knows,
+     * packed at its size, and nothing past them: ct_candidate ended with
+     * region_distance in 0.4.0 and 0.5.0, with fill in 0.6. */
     {
-        const size_t old = offsetof(ct_candidate, fill);
+        const size_t olds[] = {offsetof(ct_candidate, fill), offsetof(ct_candidate, top_width)};
+        const size_t old = olds[0];
         static unsigned char packed[33 * sizeof(ct_candidate)];
-        memset(packed, 0xAB, sizeof packed);
         ct_candidate now[32];
         ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, sizeof now[0], &nc), CT_OK);
         ck_assert_uint_ge(nc, 1);
         size_t n_old = 0;
-        ck_assert_int_eq(ct_tracker_get_candidates(t, (ct_candidate *)(void *)packed, nc, old,
-                                                   &n_old),
-                         CT_OK);
-        ck_assert_uint_eq(n_old, nc);
+        for (size_t v = 0; v < sizeof olds / sizeof olds[0]; v++) {
+            memset(packed, 0xAB, sizeof packed);
+            ck_assert_int_eq(ct_tracker_get_candidates(t, (ct_candidate *)(void *)packed, nc,
+                                                       olds[v], &n_old),
+                             CT_OK);
+            ck_assert_uint_eq(n_old, nc);
+            for (size_t i = 0; i < nc; i++)
+                ck_assert_mem_eq(packed + i * olds[v], &now[i], olds[v]);
+            for (size_t i = nc * olds[v]; i < sizeof packed; i++)
+                ck_assert_uint_eq(packed[i], 0xAB);
+        }
         for (size_t i = 0; i < nc; i++) {
-            ck_assert_mem_eq(packed + i * old, &now[i], old);
             /* The fill is a fraction, and a blob has some; the top's width
              * is a ratio, 0 when the body's rows are too few to compare. */
             ck_assert(now[i].fill > 0 && now[i].fill <= 1);
             ck_assert(now[i].top_width >= 0 && now[i].top_width < 10);
         }
-        for (size_t i = nc * old; i < sizeof packed; i++)
-            ck_assert_uint_eq(packed[i], 0xAB);
-        /* A 0.6 header's ct_candidate ended with fill. */
-        const size_t v06 = offsetof(ct_candidate, top_width);
-        memset(packed, 0xAB, sizeof packed);
-        ck_assert_int_eq(ct_tracker_get_candidates(t, (ct_candidate *)(void *)packed, nc, v06,
-                                                   &n_old),
-                         CT_OK);
-        for (size_t i = 0; i < nc; i++)
-            ck_assert_mem_eq(packed + i * v06, &now[i], v06);
-        for (size_t i = nc * v06; i < sizeof packed; i++)
-            ck_assert_uint_eq(packed[i], 0xAB);
         ck_assert_int_eq(ct_tracker_get_candidates(t, now, 32, old - 1, &n_old),
                          CT_ERROR_INVALID_ARGUMENT);
         ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "older header"));
