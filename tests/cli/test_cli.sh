@@ -219,5 +219,12 @@ if [ -w /dev/full ]; then
 fi
 expect "detections beyond the video" 0 "detections go to frame 71" -- "$ct" -q -d "$tud/det/det.txt" "$tmp/tiny.y4m"
 
+# Damaged files and parameters, a fixed-seed stream of them.
+if python3 "$(dirname "$0")/mutated_inputs.py" "$ct" > "$tmp/mutated.log" 2>&1; then
+    ok "damaged inputs: $(tail -n 1 "$tmp/mutated.log")"
+else
+    bad "damaged inputs" "$(tail -n 20 "$tmp/mutated.log")"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
