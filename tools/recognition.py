@@ -24,7 +24,10 @@ defines it, and the thresholds of the contour template's regions.
    one that best separates positives from negatives by that region's own
    vote (balanced accuracy); then the largest part of its convex hull a
    pedestrian's blob may fill: the one that gives the vote with those
-   thresholds its best balanced accuracy (the smallest of equals).
+   thresholds its best balanced accuracy (the smallest of equals). The
+   bound on the top's width (kMaxTopWidth, lib/contour_template.h) is a
+   design constant and is not chosen here; the report shows the vote
+   without that test beside it.
 
 With --write it rewrites lib/region_thresholds.inc with those thresholds,
 and tests/data/blobs/labelled.bin: the masks of held-out blobs (every
