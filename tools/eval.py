@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """make eval: ctrack and its peers on every real sequence the project has,
-scored with py-motmetrics and TrackEval; writes docs/results.md and
-docs/img/scores.png.
+scored with py-motmetrics and TrackEval; writes docs/results.md,
+docs/img/scores.png and docs/img/rates.png.
 
     eval.py BUILD_DIR [--out DOCS_DIR]
 
@@ -198,7 +198,8 @@ def main():
                 write_rows(path, rows)
             r = score(os.path.join(DATA, seq, "gt", "gt.txt"), path)
             r.update({"sequence": seq, "key": key, "tracker": label, "input": mode,
-                      "seconds": seconds, "fps": n / seconds if seconds > 0 else float("inf")})
+                      "seconds": seconds, "fps": n / seconds if seconds > 0 else float("inf"),
+                      "fps_native": fps})
             results.append(r)
     lower = lower_rates(a.build, seqs, tmp)
     te = trackeval_scores(seqs, tmp, [k for k, _, _ in TRACKERS])
@@ -211,8 +212,8 @@ def main():
     write_report(a.out, results, seqs, worst, lower)
     with open(os.path.join(a.build, "eval.json"), "w") as f:
         json.dump(results, f, indent=1)
-    print("eval: wrote %s/results.md, %s/img/scores.png, %s/eval.json"
-          % (a.out, a.out, a.build), file=sys.stderr)
+    print("eval: wrote %s/results.md, %s/img/scores.png, %s/img/rates.png, %s/eval.json"
+          % (a.out, a.out, a.out, a.build), file=sys.stderr)
 
 
 LOWER_RATES = [
@@ -257,7 +258,7 @@ def lower_rates(build, seqs, tmp):
                     runs.setdefault(key, []).append(score(gt, path))
                 os.remove(y4m)
             for key, label, mode, _ in LOWER_RATES:
-                results.append({"sequence": seq, "step": k, "fps": info["fps"] / k,
+                results.append({"sequence": seq, "step": k, "fps": info["fps"] / k, "key": key,
                                 "tracker": label, "input": mode, "runs": runs[key]})
     return results
 
@@ -265,6 +266,43 @@ def lower_rates(build, seqs, tmp):
 def mean_and_range(runs, measure):
     v = [r[measure] for r in runs]
     return "%.1f (%.1f-%.1f)" % (sum(v) / len(v), min(v), max(v))
+
+
+def plot_rates(plt, path, results, seqs, lower):
+    """MOTA and IDF1 against the frame rate, one line a tracker of the
+    lower-rate table: the native rate from the main runs, then a half and a
+    third (the mean over the offsets, the bar from the lowest to the
+    highest)."""
+    fig, axes = plt.subplots(len(seqs), 2, figsize=(11, 4.2 * len(seqs)))
+    for row, seq in zip(axes, seqs):
+        for key, label, mode, _ in LOWER_RATES:
+            native = [r for r in results if r["sequence"] == seq and r["key"] == key]
+            lows = sorted((r for r in lower if r["sequence"] == seq and r["key"] == key),
+                          key=lambda r: r["step"])
+            if not native or not lows:
+                continue
+            fps = [native[0]["fps_native"]] + [r["fps"] for r in lows]
+            name = "%s (%s)" % (label.split(" (")[0], mode)
+            style = "-" if label.startswith("ctrack") else "--"
+            for ax, m in zip(row, ("MOTA", "IDF1")):
+                mean = [native[0][m]] + [sum(x[m] for x in r["runs"]) / len(r["runs"])
+                                         for r in lows]
+                lo = [0] + [mean[i + 1] - min(x[m] for x in r["runs"]) for i, r in enumerate(lows)]
+                hi = [0] + [max(x[m] for x in r["runs"]) - mean[i + 1] for i, r in enumerate(lows)]
+                ax.errorbar(fps, mean, yerr=[lo, hi], linestyle=style, marker="o", capsize=3,
+                            label=name)
+        for ax, m in zip(row, ("MOTA", "IDF1")):
+            ax.set_title("%s: %s" % (seq, m))
+            ax.set_xlabel("frames per second")
+            ax.set_ylabel("%s (%%)" % m)
+            ax.grid(alpha=0.3)
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8)
+    fig.suptitle("Scores against the frame rate (every k-th frame kept; mean and range "
+                 "over the offsets)")
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
 
 
 def write_report(out, results, seqs, worst, lower):
@@ -295,6 +333,7 @@ def write_report(out, results, seqs, worst, lower):
     fig.suptitle("ctrack and its peers, MOTChallenge 2015 public detections (online)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "img", "scores.png"), dpi=110)
+    plot_rates(plt, os.path.join(out, "img", "rates.png"), results, seqs, lower)
 
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("# Results\n\n")
@@ -324,6 +363,7 @@ def write_report(out, results, seqs, worst, lower):
                            r["seconds"], r["fps"]))
             f.write("\n")
         f.write(LOWER_RATES_HEAD)
+        f.write("![scores against the frame rate](img/rates.png)\n\n")
         f.write("| sequence | tracker | input | MOTA: mean (range) | IDF1: mean (range) "
                 "| ID sw. (sum) |\n")
         f.write("|---|---|---|---|---|---|\n")
