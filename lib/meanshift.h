@@ -25,8 +25,8 @@ constexpr double kTargetRingSamples = 300;
 
 // A track's colour model: histograms in Q16.
 struct ColorModel {
-    uint16_t q[kHistBins];  // the target as observed (eq. 9 blends this one)
-    uint16_t qw[kHistBins]; // q weighted against the surrounding background (CBWH)
+    uint16_t q[kHistBins] = {};  // the target as observed (eq. 9 blends this one)
+    uint16_t qw[kHistBins] = {}; // q weighted against the surrounding background (CBWH)
     bool valid = false;
     bool color = false;     // built from a colour frame (else grey)
 };
