@@ -38,8 +38,12 @@ sanitize: deps
 	    meson test -C $(SANITIZE_BUILD) --suite lib --suite cli --suite python --suite replay \
 	    --print-errorlogs
 
+# meson does not refresh the loader's cache: without ldconfig, programs
+# linked to the new library (and `import ctrack`) would not find it.
 install: all
 	meson install -C $(BUILD)
+	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig > /dev/null; then \
+	    ldconfig; fi
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD)

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Installs into a scratch folder and builds the example against it through
 # the installed ctrack.pc, once linked to the shared and once to the static
-# library; both must track.
+# library; both must track. The installed ct-track must run without help,
+# and the installed Python package must track as it does.
 #   install.sh BUILD_DIR SOURCE_DIR
 set -eu
 build=$1 src=$2
@@ -27,4 +28,32 @@ LD_LIBRARY_PATH=$libdir "$tmp/shared" 25 < "$det" > "$tmp/a.txt"
 cmp "$tmp/a.txt" "$tmp/b.txt"
 lines=$(wc -l < "$tmp/a.txt")
 [ "$lines" -gt 200 ] || { echo "install: the example tracked $lines lines"; exit 1; }
-echo "install: header, ct-track, ctrack.pc; shared and static builds agree ($lines lines)"
+# ct-track finds the library installed beside it without help (its
+# runpath), whatever the prefix.
+env -u LD_LIBRARY_PATH "$root/bin/ct-track" --version > /dev/null ||
+    { echo "install: the installed ct-track does not find the installed library"; exit 1; }
+# The Python package, installed into the site folder of the python3 that
+# configured the build: imported from there (not from the source tree), it
+# loads the installed library and tracks as the installed ct-track does.
+init=$(find "$root" -path '*/ctrack/__init__.py' | head -n 1)
+[ -n "$init" ] || { echo "install: no Python package installed"; exit 1; }
+site=$(dirname "$(dirname "$init")")
+"$root/bin/ct-track" -q -d "$det" -r 25 > "$tmp/ct.txt"
+py=$("$src/tools/venv.sh")
+cat > "$tmp/track.py" <<'END'
+import sys
+import numpy as np
+import ctrack
+assert ctrack.__file__.startswith(sys.argv[2]), ctrack.__file__
+d = np.loadtxt(sys.argv[1], delimiter=",", ndmin=2)
+with ctrack.Tracker(fps=25) as t:
+    for k in range(1, int(d[:, 0].max()) + 1):
+        for tr in t.feed(None, d[d[:, 0] == k][:, 2:7]):
+            print("%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1" % (
+                k, tr["id"], tr["left"], tr["top"], tr["width"], tr["height"],
+                tr["confidence"]))
+END
+(cd "$tmp" && env -u CTRACK_LIBRARY PYTHONPATH="$site" LD_LIBRARY_PATH="$libdir" \
+    "$py" track.py "$det" "$site" > py.txt)
+cmp "$tmp/ct.txt" "$tmp/py.txt" || { echo "install: the installed Python package and ct-track differ"; exit 1; }
+echo "install: header, ct-track, ctrack.pc, the Python package; the shared and static builds and Python agree ($lines lines)"
