@@ -240,6 +240,10 @@ def lower_rates(build, seqs, tmp):
     results = []
     for seq in seqs:
         info = seqinfo(seq)
+        # Before 0.7.1 the half-rate video was cached; it is made in tmp now.
+        stale = os.path.join(cache_dir(), seq.lower() + "-half.y4m")
+        if os.path.exists(stale):
+            os.remove(stale)
         for k in LOWER_RATE_STEPS:
             runs = {}
             for offset in range(k):

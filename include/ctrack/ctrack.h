@@ -30,7 +30,7 @@ extern "C" {
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
 #define CT_VERSION_MINOR 7
-#define CT_VERSION_PATCH 0
+#define CT_VERSION_PATCH 1
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
 #define CT_ABI_VERSION 1
