@@ -65,7 +65,7 @@ def load_dets(seq, path=None):
     return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
 
 
-def subsampled(seq, info, y4m, k, offset, tmp):
+def subsampled(seq, info, y4m, k, offset, tmp, data=DATA):
     """The sequence at 1/k of its frame rate: frames offset+1, offset+1+k,
     ... kept and numbered again from 1. Writes a Y4M and the ground truth and
     detections of those frames into tmp; returns (y4m, gt, det, info)."""
@@ -79,7 +79,7 @@ def subsampled(seq, info, y4m, k, offset, tmp):
             f.write(row.tobytes())
     paths = []
     for kind in ("gt", "det"):
-        a = np.loadtxt(os.path.join(DATA, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
+        a = np.loadtxt(os.path.join(data, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
         a = a[(a[:, 0] - 1 - offset) % k == 0]
         a[:, 0] = (a[:, 0] - 1 - offset) // k + 1
         paths.append(os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
