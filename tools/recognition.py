@@ -547,8 +547,8 @@ no ground-truth box, but a detector saw a person there; looking at them,
 most are people the ground truth lacks (the contact sheet below shows the
 vote's false positives). The last three columns also leave out the
 negatives at the image's edge (within 2 pixels): the ground truth lacks
-most people while they are partly outside, and the detector does not see
-them either. The positives are all kept in both. With the edge's negatives
+most people while they are partly outside, and the detector often misses
+them too. The positives are all kept in both. With the edge's negatives
 left in, the size and aspect filter does as well as the vote or better on
 PETS09-S2L1: what is left of its negatives there is mostly too small or too
 flat for a person. With them left out, the vote is ahead on every set; the
