@@ -25,6 +25,10 @@ from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
            "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
+#: The version of the header this package mirrors (the library it loads
+#: may be newer: version() tells).
+__version__ = _abi.VERSION
+
 _lib = None
 
 #: The numpy dtype of a track: the fields of ct_track.

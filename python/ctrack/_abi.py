@@ -6,6 +6,10 @@ compiler's, so a change to the header that is not made here fails a test.
 import ctypes as C
 
 ABI_VERSION = 1
+# The version of include/ctrack/ctrack.h these mirrors follow, and the Python
+# package's (python/pyproject.toml); test_abi.py checks it against the
+# library's.
+VERSION = "0.7.1"
 
 OK = 0
 ERROR_INVALID_ARGUMENT = -1

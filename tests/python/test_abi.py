@@ -23,3 +23,10 @@ def test_struct_layout(layout, name):
     assert ctypes.sizeof(cls) == want.pop("sizeof")
     got = {f: getattr(cls, f).offset for f, _ in cls._fields_}
     assert got == want
+
+
+def test_version_is_the_header_s():
+    """_abi.py (and so the pip package) follows the header it mirrors."""
+    import ctrack
+    assert _abi.VERSION == ctrack.version()
+    assert ctrack.__version__ == _abi.VERSION
