@@ -379,6 +379,8 @@ int main(int argc, char **argv)
 
     const double t0 = now_seconds();
     double next_progress = t0 + 0.5;
+    const int tty = isatty(STDERR_FILENO);
+    const char *lead = tty ? "\r" : "", *tail = tty ? "" : "\n";
     long long k = 0;
     for (;;) {
         ct_frame frame, picture;
@@ -477,18 +479,21 @@ int main(int argc, char **argv)
             double now = now_seconds();
             if (now >= next_progress) {
                 next_progress = now + 0.5;
+                /* On a terminal each update overwrites the last; in a log
+                 * each is a line of its own. */
                 if (frames > 0)
-                    fprintf(stderr, "\rct-track: frame %lld of %lld, %.0f frames/s", k, frames,
-                            k / (now - t0));
+                    fprintf(stderr, "%sct-track: frame %lld of %lld, %.0f frames/s%s", lead, k,
+                            frames, k / (now - t0), tail);
                 else
-                    fprintf(stderr, "\rct-track: frame %lld, %.0f frames/s", k, k / (now - t0));
+                    fprintf(stderr, "%sct-track: frame %lld, %.0f frames/s%s", lead, k,
+                            k / (now - t0), tail);
             }
         }
     }
     if (progress) {
         double el = now_seconds() - t0;
         long rss = ct_peak_rss_kib();
-        fprintf(stderr, "\rct-track: %lld frames in %.3f s, %.0f frames/s", k, el,
+        fprintf(stderr, "%sct-track: %lld frames in %.3f s, %.0f frames/s", lead, k, el,
                 el > 0 ? k / el : 0.0);
         if (rss >= 0)
             fprintf(stderr, ", peak memory %.1f MiB", rss / 1024.0);

@@ -148,6 +148,15 @@ else
     expect "overlay from standard input to standard output" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -o '$tmp/t.txt' --overlay - - < '$tmp/tud.y4m' > '$tmp/ov2.y4m'"
     same "overlay to standard output" "$tmp/ov2.y4m" "$tmp/ov.y4m"
     expect "progress" 0 "frames/s" -- "$ct" --progress -d "$tud/det/det.txt" -o /dev/null "$tmp/tud.y4m"
+    # Into a log (not a terminal): a line per update, no carriage returns.
+    # The input pauses for 0.7 s after about ten frames, so that an update
+    # comes before the last line.
+    expect "progress in a log" 0 "frames in" -- sh -c "(dd if='$tmp/tud.y4m' bs=1M count=5; sleep 0.7; dd if='$tmp/tud.y4m' bs=1M skip=5) 2> /dev/null | '$ct' --progress -d '$tud/det/det.txt' -o /dev/null -"
+    if grep -q $'\r' "$tmp/err" || [ "$(grep -c "^ct-track: " "$tmp/err")" -lt 2 ]; then
+        bad "progress lines in a log" "$(od -c "$tmp/err" | head -5)"
+    else
+        ok "progress lines in a log"
+    fi
 fi
 
 printf 'YUV4MPEG2 H480 F25:1\n' > "$tmp/nowidth.y4m"
