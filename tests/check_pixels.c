@@ -403,6 +403,58 @@ START_TEST(pixels_alone)
 }
 END_TEST
 
+/* The frames change size (a host that switches its camera's mode), then
+ * from colour to grey: each change starts the background model again, as
+ * at the first frame, and the candidates that follow lie in the new image
+ * and find the person there. The smaller frames are the top left of the
+ * same buffers, read through their strides. */
+START_TEST(a_new_frame_size_starts_the_model_again)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    cfg.candidate_min_score = cfg.low_score; /* as in pixels_alone */
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    ct_candidate cand[32];
+    size_t nc = 0;
+    int k = 0;
+    for (; k < 20; k++) {
+        draw(&im, 40 + 6.0 * k, 120);
+        step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+    }
+    const int w = W / 2, h = H / 2;
+    for (int phase = 0; phase < 2; phase++) {
+        const uint32_t format = phase == 0 ? CT_FORMAT_I420 : CT_FORMAT_GRAY8;
+        const ct_candidate *person = NULL;
+        double cx = 0;
+        for (int j = 0; j < 15; j++, k++) {
+            cx = 20 + 5.0 * j;
+            draw(&im, cx, 60);
+            ct_frame f = frame_of(&im, format, k * SEC / 10);
+            f.width = w;
+            f.height = h;
+            ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+            size_t n = 0;
+            ck_assert_int_eq(ct_tracker_get_tracks(t, out, 64, sizeof out[0], &n), CT_OK);
+            ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+            for (size_t i = 0; i < nc; i++)
+                ck_assert_msg(cand[i].left >= 0 && cand[i].top >= 0 &&
+                                  cand[i].left + cand[i].width <= w &&
+                                  cand[i].top + cand[i].height <= h,
+                              "a candidate outside the %dx%d frame: %.0f,%.0f %.0fx%.0f", w, h,
+                              cand[i].left, cand[i].top, cand[i].width, cand[i].height);
+        }
+        for (size_t i = 0; i < nc; i++)
+            if (fabs(cand[i].left + cand[i].width / 2 - cx) < 12)
+                person = &cand[i];
+        ck_assert_msg(person != NULL, "%s: no candidate on the person among %zu after the change",
+                      phase == 0 ? "smaller frames" : "grey frames", nc);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 /* A pedestrian's shape 70 pixels tall, its top centre at (cx, top): head,
  * neck, torso with arms, and two legs, drawn over what is there. */
 static void draw_pedestrian(image *im, double cx, int top)
@@ -533,6 +585,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, reidentifies_by_appearance);
     tcase_add_test(tc, threads_with_pixels);
     tcase_add_test(tc, pixels_alone);
+    tcase_add_test(tc, a_new_frame_size_starts_the_model_again);
     tcase_add_test(tc, verify_detections_rejects_a_car);
     suite_add_tcase(s, tc);
     return s;
