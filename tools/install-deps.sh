@@ -1,9 +1,11 @@
 #!/bin/sh
-# Installs the Debian packages ctrack needs to build, test and run its demo.
+# Installs the Debian packages ctrack needs to build, test and run its demo,
+# and python3-numpy, which the Python package `make install` puts beside
+# Debian's python3 imports.
 #   install-deps.sh          install what is missing (uses sudo when not root)
 #   install-deps.sh --check  exit 1 if something is missing, installing nothing
 set -eu
-packages="gcc g++ make pkg-config meson ninja-build check python3 python3-venv ffmpeg
+packages="gcc g++ make pkg-config meson ninja-build check python3 python3-venv python3-numpy ffmpeg
 libopencv-core-dev libopencv-imgproc-dev libopencv-video-dev libflann-dev liblz4-dev"
 
 missing=""
