@@ -149,9 +149,9 @@ else
     same "overlay to standard output" "$tmp/ov2.y4m" "$tmp/ov.y4m"
     expect "progress" 0 "frames/s" -- "$ct" --progress -d "$tud/det/det.txt" -o /dev/null "$tmp/tud.y4m"
     # Into a log (not a terminal): a line per update, no carriage returns.
-    # The input pauses for 0.7 s after about ten frames, so that an update
+    # The input pauses for 1.2 s after about ten frames, so that an update
     # comes before the last line.
-    expect "progress in a log" 0 "frames in" -- sh -c "(dd if='$tmp/tud.y4m' bs=1M count=5; sleep 0.7; dd if='$tmp/tud.y4m' bs=1M skip=5) 2> /dev/null | '$ct' --progress -d '$tud/det/det.txt' -o /dev/null -"
+    expect "progress in a log" 0 "frames in" -- sh -c "(dd if='$tmp/tud.y4m' bs=1M count=5; sleep 1.2; dd if='$tmp/tud.y4m' bs=1M skip=5) 2> /dev/null | '$ct' --progress -d '$tud/det/det.txt' -o /dev/null -"
     if grep -q $'\r' "$tmp/err" || [ "$(grep -c "^ct-track: " "$tmp/err")" -lt 2 ]; then
         bad "progress lines in a log" "$(od -c "$tmp/err" | head -5)"
     else
