@@ -67,16 +67,19 @@ def load_dets(seq, path=None):
 
 def subsampled(seq, info, y4m, k, offset, tmp, data=DATA):
     """The sequence at 1/k of its frame rate: frames offset+1, offset+1+k,
-    ... kept and numbered again from 1. Writes a Y4M and the ground truth and
-    detections of those frames into tmp; returns (y4m, gt, det, info)."""
-    w, h, (num, den), frames = open_y4m(y4m)
+    ... kept and numbered again from 1. Writes a Y4M of the video y4m (none
+    when y4m is None) and the ground truth and detections of those frames
+    into tmp; returns (y4m or None, gt, det, info)."""
     tag = "%s-%dof%d" % (seq, offset + 1, k)
-    out = os.path.join(tmp, tag + ".y4m")
-    with open(out, "wb") as f:
-        f.write(b"YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg\n" % (w, h, num, den * k))
-        for row in frames[offset::k]:
-            f.write(b"FRAME\n")
-            f.write(row.tobytes())
+    out = None
+    if y4m is not None:
+        w, h, (num, den), frames = open_y4m(y4m)
+        out = os.path.join(tmp, tag + ".y4m")
+        with open(out, "wb") as f:
+            f.write(b"YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg\n" % (w, h, num, den * k))
+            for row in frames[offset::k]:
+                f.write(b"FRAME\n")
+                f.write(row.tobytes())
     paths = []
     for kind in ("gt", "det"):
         a = np.loadtxt(os.path.join(data, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)

@@ -51,11 +51,9 @@ def variants(data_dir, steps, pixels, tmp):
                         y4m = video(name)
                 else:
                     from eval import seqinfo, subsampled, video
-                    y4m, gt, det, _ = subsampled(name, seqinfo(name), video(name), k, offset,
+                    y4m, gt, det, _ = subsampled(name, seqinfo(name),
+                                                 video(name) if pixels else None, k, offset,
                                                  tmp, data=data_dir)
-                    if not pixels:
-                        os.remove(y4m)
-                        y4m = None
                 runs.append(((w, h), fps / k, det, gt, y4m))
         out[name] = runs
     return out
