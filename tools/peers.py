@@ -13,6 +13,10 @@ make eval and make bench. Each returns MOTChallenge rows
   contours as blobs (at least 400 pixels), and an IoU tracker (optimal
   assignment, IoU >= 0.3, confirmed after 3 hits, kept 3 frames without a
   match, reporting matched tracks).
+- OpenCV's own trackers (KCF, CSRT from opencv-contrib-python 4.10), one
+  per person, on the public detections and the frames: the same IoU
+  tracker, where each track's box is where its OpenCV tracker follows the
+  person, and a matched detection starts the tracker again on its box.
 """
 import time
 import warnings
@@ -92,12 +96,17 @@ def iou_matrix(a, b):
 
 
 class IoUTracker:
+    """Boxes matched to tracks by IoU (optimal assignment), confirmed after
+    min_hits matches, kept max_missed frames without one. The hooks let a
+    subclass move the boxes on the pixels between detections."""
+
     def __init__(self, min_iou=0.3, min_hits=3, max_missed=3):
         self.min_iou, self.min_hits, self.max_missed = min_iou, min_hits, max_missed
         self.tracks = []  # dicts: box, hits, missed, id
         self.next_id = 1
 
-    def update(self, boxes):
+    def update(self, boxes, image=None):
+        self._follow(image)
         boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
         prev = np.array([t["box"] for t in self.tracks]).reshape(-1, 4)
         iou = iou_matrix(prev, boxes)
@@ -108,6 +117,7 @@ class IoUTracker:
                 if iou[i, j] >= self.min_iou:
                     t = self.tracks[i]
                     t["box"], t["hits"], t["missed"] = boxes[j], t["hits"] + 1, 0
+                    self._matched(t, image)
                     matched_t.add(i)
                     matched_b.add(j)
         for i, t in enumerate(self.tracks):
@@ -116,15 +126,63 @@ class IoUTracker:
         self.tracks = [t for t in self.tracks if t["missed"] <= self.max_missed]
         for j in range(len(boxes)):
             if j not in matched_b:
-                self.tracks.append({"box": boxes[j], "hits": 1, "missed": 0, "id": 0})
+                t = {"box": boxes[j], "hits": 1, "missed": 0, "id": 0}
+                self._matched(t, image)
+                self.tracks.append(t)
         out = []
         for t in self.tracks:
-            if t["missed"] == 0 and t["hits"] >= self.min_hits:
+            if self._reported(t) and t["hits"] >= self.min_hits:
                 if not t["id"]:
                     t["id"] = self.next_id
                     self.next_id += 1
                 out.append((t["id"], t["box"]))
         return out
+
+    def _follow(self, image):
+        """Before the association: move the tracks' boxes (here they stay)."""
+
+    def _matched(self, t, image):
+        """A box has just been given to track t (matched or new)."""
+
+    def _reported(self, t):
+        return t["missed"] == 0
+
+
+class OpenCVTrackers(IoUTracker):
+    """Tracking by detection with one of OpenCV's single-object trackers per
+    person, as people build it from OpenCV: each track runs the tracker on
+    every frame, the detections are matched to the boxes it gives, and a
+    matched detection starts the tracker again on its box (so it does not
+    drift). Between detections the tracker follows the person on the
+    pixels, and the track is reported while it says it holds them."""
+
+    def __init__(self, kind, width, height, **kw):
+        super().__init__(**kw)
+        import cv2
+        self.make = {"KCF": cv2.TrackerKCF_create, "CSRT": cv2.TrackerCSRT_create}[kind]
+        self.width, self.height = width, height
+
+    def _follow(self, image):
+        for t in self.tracks:
+            t["ok"] = False
+            if t["cv"] is not None:
+                ok, box = t["cv"].update(image)
+                if ok:
+                    t["box"], t["ok"] = np.array(box, dtype=float), True
+
+    def _matched(self, t, image):
+        # OpenCV's trackers take a box inside the image, in whole pixels.
+        x0, y0 = max(0.0, t["box"][0]), max(0.0, t["box"][1])
+        x1 = min(float(self.width), t["box"][0] + t["box"][2])
+        y1 = min(float(self.height), t["box"][1] + t["box"][3])
+        t["cv"], t["ok"] = None, False
+        if x1 - x0 >= 4 and y1 - y0 >= 4:
+            t["cv"] = self.make()
+            t["cv"].init(image, (int(x0), int(y0), int(round(x1 - x0)), int(round(y1 - y0))))
+            t["ok"] = True
+
+    def _reported(self, t):
+        return t["missed"] == 0 or t["ok"]
 
 
 class Mog2Blobs:
@@ -166,6 +224,27 @@ def mog2_iou(y4m_path, n_frames=None):
         bgr = cv2.cvtColor(i420, cv2.COLOR_YUV2BGR_I420)
         t0 = time.perf_counter()
         out = tracker.update(blobs.boxes(bgr))
+        spent += time.perf_counter() - t0
+        for tid, (x, y, bw, bh) in out:
+            rows.append((k, tid, x, y, bw, bh))
+    return rows, spent
+
+
+def opencv_trackers(kind, y4m_path, dets_by_frame, n_frames=None):
+    """OpenCV's KCF or CSRT tracker per person, on the public detections and
+    the frames of a Y4M file (OpenCVTrackers)."""
+    import cv2
+    from y4m import open_y4m
+    w, h, _, frames = open_y4m(y4m_path)
+    n = len(frames) if n_frames is None else min(n_frames, len(frames))
+    tracker = OpenCVTrackers(kind, w, h)
+    rows, spent = [], 0.0
+    for k in range(1, n + 1):
+        bgr = cv2.cvtColor(np.asarray(frames[k - 1]).reshape(h * 3 // 2, w),
+                           cv2.COLOR_YUV2BGR_I420)
+        d = dets_by_frame.get(k, np.zeros((0, 5)))
+        t0 = time.perf_counter()
+        out = tracker.update(d[:, :4], bgr)
         spent += time.perf_counter() - t0
         for tid, (x, y, bw, bh) in out:
             rows.append((k, tid, x, y, bw, bh))
