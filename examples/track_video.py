@@ -72,10 +72,8 @@ def main():
             # The timestamp of frame k, as ct-track computes it.
             tracks = tracker.feed(frame, d, timestamp=round((k - 1) * 1e6 / fps) / 1e6,
                                   format="i420")
-            for t in tracks:
-                out.write("%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1\n"
-                          % (k, t["id"], t["left"], t["top"], t["width"], t["height"],
-                             t["confidence"]))
+            for line in ctrack.mot_lines(k, tracks):
+                out.write(line + "\n")
     finally:
         if tracker is not None:
             tracker.close()

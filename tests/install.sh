@@ -48,10 +48,8 @@ assert ctrack.__file__.startswith(sys.argv[2]), ctrack.__file__
 d = np.loadtxt(sys.argv[1], delimiter=",", ndmin=2)
 with ctrack.Tracker(fps=25) as t:
     for k in range(1, int(d[:, 0].max()) + 1):
-        for tr in t.feed(None, d[d[:, 0] == k][:, 2:7]):
-            print("%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1" % (
-                k, tr["id"], tr["left"], tr["top"], tr["width"], tr["height"],
-                tr["confidence"]))
+        for line in ctrack.mot_lines(k, t.feed(None, d[d[:, 0] == k][:, 2:7])):
+            print(line)
 END
 (cd "$tmp" && env -u CTRACK_LIBRARY PYTHONPATH="$site" LD_LIBRARY_PATH="$libdir" \
     "$py" track.py "$det" "$site" > py.txt)

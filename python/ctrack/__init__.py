@@ -23,7 +23,7 @@ from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
                    SOURCE_DETECTIONS, SOURCE_PIXELS)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
 #: The version of the header this package mirrors (the library it loads
 #: may be newer: version() tells).
@@ -104,6 +104,15 @@ def version_number():
 
 def abi_version():
     return load().ct_abi_version()
+
+
+def mot_lines(frame, tracks):
+    """The lines ct-track writes for one frame's tracks, in MOTChallenge's
+    format: frame,id,left,top,width,height,confidence,-1,-1,-1 (frame
+    numbered from 1; no line ends)."""
+    return ["%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1"
+            % (frame, t["id"], t["left"], t["top"], t["width"], t["height"], t["confidence"])
+            for t in tracks]
 
 
 def _status_error(lib, status, message):

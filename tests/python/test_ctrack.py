@@ -68,10 +68,7 @@ def test_replay_equals_ct_track(tmp_path):
     lines = []
     with ctrack.Tracker(fps=fps) as t:
         for k in range(1, n + 1):
-            for tr in t.feed(None, dets.get(k)):
-                lines.append("%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1" % (
-                    k, tr["id"], tr["left"], tr["top"], tr["width"], tr["height"],
-                    tr["confidence"]))
+            lines += ctrack.mot_lines(k, t.feed(None, dets.get(k)))
     ct = os.environ.get("CTRACK_CT_TRACK")
     assert ct, "CTRACK_CT_TRACK must name ct-track (meson test sets it)"
     out = subprocess.run([ct, "-q", "-d", os.path.join(DATA, "TUD-Campus", "det", "det.txt"),
