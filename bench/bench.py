@@ -124,6 +124,26 @@ def opencv_follow_us(y4m, kind, people=10, frames=50):
     return 1e6 * spent / n
 
 
+def colour_conversion_us(y4m, frames):
+    """OpenCV's and numpy's BGR to I420 on the first frames of y4m, us a
+    frame (the frames made BGR by OpenCV first, not counted)."""
+    import cv2
+    sys.path.insert(0, os.path.join(TOP, "python"))
+    from ctrack import bgr_to_i420
+    cv2.setNumThreads(1)
+    w, h, _, rows = open_y4m(y4m)
+    bgr = [cv2.cvtColor(np.asarray(rows[k]).reshape(h * 3 // 2, w), cv2.COLOR_YUV2BGR_I420)
+           for k in range(frames)]
+    out = {}
+    for name, convert in (("opencv", lambda b: cv2.cvtColor(b, cv2.COLOR_BGR2YUV_I420)),
+                          ("numpy", bgr_to_i420)):
+        t0 = time.perf_counter()
+        for b in bgr:
+            convert(b)
+        out[name] = 1e6 * (time.perf_counter() - t0) / frames
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
@@ -174,9 +194,36 @@ def main():
         say(l)
     say("```")
 
+    lib = {r["name"]: r for r in report["library"]["runs"]}
+
+    # 1c. Colour frames: the library's own conversion of packed BGR (0.8.0),
+    # beside OpenCV's and the Python binding's numpy one on the same frames.
+    colour = colour_conversion_us(pets, 30 if a.quick else 100)
+    rb, ri = lib["pixels only 768x576 BGR24"], lib["pixels only 768x576"]
+    colour.update({"ctrack": rb["stages_us"]["convert"],
+                   "pixels_only_i420_us": ri["us_per_frame"],
+                   "pixels_only_bgr24_us": rb["us_per_frame"]})
+    report["colour_conversion_us"] = colour
+    say("")
+    say("## Colour frames: packed BGR to planes (768x576, one core)")
+    say("")
+    say("A host that has BGR (OpenCV, many cameras) hands it over as `CT_FORMAT_BGR24`, "
+        "and the library converts it (the stage `convert` above). Beside it, on the same "
+        "PETS09-S2L1 frames in the same run: OpenCV's `cvtColor(COLOR_BGR2YUV_I420)` on "
+        "one thread, and the numpy conversion the Python binding used before 0.8.0 "
+        "(`ctrack.bgr_to_i420`, still used with an older library).")
+    say("")
+    say("| conversion | us per frame | against ctrack's |")
+    say("|---|---|---|")
+    for name, key in (("ctrack (in the library)", "ctrack"),
+                      ("OpenCV cvtColor", "opencv"), ("numpy (bgr_to_i420)", "numpy")):
+        say("| %s | %.0f | %.1fx |" % (name, colour[key], colour[key] / colour["ctrack"]))
+    say("")
+    say("The whole pixels-only step took %.0f us a frame from BGR24 and %.0f from I420 "
+        "in the runs above." % (colour["pixels_only_bgr24_us"], colour["pixels_only_i420_us"]))
+
     # 2. Peers on the same detections, in this run.
     dets = load_dets("PETS09-S2L1")
-    lib = {r["name"]: r for r in report["library"]["runs"]}
     us = lib["detections 768x576"]["us_per_frame"]
     peers_us = {name: 1e6 * run(dets, 795, 7)[1] / 795 for name, run in (
         ("ByteTrack (supervision 0.30.9)", peers.bytetrack),

@@ -109,8 +109,9 @@ static void free_sequence(sequence *s)
 /* Real frames in memory, for the runs with pixels. */
 typedef struct {
     int width, height, frames;
-    uint8_t *data; /* frames * bytes */
-    size_t bytes;  /* one I420 frame */
+    uint8_t *data;   /* frames * bytes */
+    size_t bytes;    /* one frame */
+    uint32_t format; /* CT_FORMAT_I420 or CT_FORMAT_BGR24 */
 } video;
 
 static video load_video(const char *path, int max_frames)
@@ -127,6 +128,7 @@ static video load_video(const char *path, int max_frames)
     }
     v.width = info.width;
     v.height = info.height;
+    v.format = CT_FORMAT_I420;
     v.bytes = ct_frame_bytes(CT_FORMAT_I420, v.width, v.height);
     v.data = malloc(v.bytes * max_frames);
     ct_frame f;
@@ -140,6 +142,34 @@ static video load_video(const char *path, int max_frames)
     }
     ct_input_close(in);
     return v;
+}
+
+/* The same frames as packed BGR (BT.601 back from I420), as a host whose
+ * camera or decoder gives BGR hands them over. */
+static video to_bgr24(const video *v)
+{
+    video b = *v;
+    b.format = CT_FORMAT_BGR24;
+    b.bytes = (size_t)3 * v->width * v->height;
+    b.data = malloc(b.bytes * v->frames);
+    const size_t luma = (size_t)v->width * v->height;
+    const size_t chroma = (size_t)((v->width + 1) / 2) * ((v->height + 1) / 2);
+    for (int k = 0; k < v->frames; k++) {
+        const uint8_t *y = v->data + v->bytes * k, *u = y + luma, *w = u + chroma;
+        uint8_t *out = b.data + b.bytes * k;
+        for (int r = 0; r < v->height; r++)
+            for (int c = 0; c < v->width; c++) {
+                const size_t ci = (size_t)(r / 2) * ((v->width + 1) / 2) + c / 2;
+                const int cy = y[(size_t)r * v->width + c] - 16, cu = u[ci] - 128,
+                          cv = w[ci] - 128;
+                const int bgr[3] = {(298 * cy + 516 * cu + 128) / 256,
+                                    (298 * cy - 100 * cu - 208 * cv + 128) / 256,
+                                    (298 * cy + 409 * cv + 128) / 256};
+                for (int i = 0; i < 3; i++)
+                    *out++ = (uint8_t)(bgr[i] < 0 ? 0 : bgr[i] > 255 ? 255 : bgr[i]);
+            }
+    }
+    return b;
 }
 
 typedef struct {
@@ -183,8 +213,8 @@ static result run(const sequence *s, int passes, double fps, int w, int h, const
     const int frames = v && v->frames < s->frames ? v->frames : s->frames;
     if (v) {
         size_t cw = (w + 1) / 2;
-        f.format = CT_FORMAT_I420;
-        f.strides[0] = w;
+        f.format = v->format;
+        f.strides[0] = v->format == CT_FORMAT_BGR24 ? 3 * w : w;
         f.strides[1] = f.strides[2] = (int32_t)cw;
     }
     ct_track *out = malloc(4096 * sizeof *out);
@@ -319,6 +349,12 @@ int main(int argc, char **argv)
         print_result(json, "detections+pixels 768x576", &r, 0, 0);
         r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &v, CT_SOURCE_PIXELS);
         print_result(json, "pixels only 768x576", &r, 0, 0);
+        /* The same from packed BGR, which the library converts (the stage
+         * "convert"). */
+        video bgr = to_bgr24(&v);
+        r = run(&pets, passes > 5 ? 5 : passes, 7, v.width, v.height, &bgr, CT_SOURCE_PIXELS);
+        print_result(json, "pixels only 768x576 BGR24", &r, 0, 0);
+        free(bgr.data);
         free(v.data);
     }
     if (video_hd_path) {

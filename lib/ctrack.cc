@@ -23,7 +23,11 @@ struct ct_tracker {
     explicit ct_tracker(const ct_config &cfg) : engine(cfg), source(cfg.source) {}
     ctrack::Engine engine;
     int source;
-    uint64_t steps = 0, feed_ns = 0, validate_ns = 0;
+    uint64_t steps = 0, feed_ns = 0, validate_ns = 0, convert_ns = 0;
+    // A packed colour frame's planes, made by the library (CT_FORMAT_BGR24,
+    // CT_FORMAT_RGB24): kept from one feed to the next, so that a steady
+    // stream of frames allocates nothing.
+    std::vector<int16_t> converted;
     // The message of the last failed call. A fixed buffer: reporting an
     // error never allocates.
     mutable char error[512] = {0};
@@ -194,15 +198,21 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
                             "frame.timestamp_us: %lld does not increase (the last was %lld)",
                             (long long)f.timestamp_us, (long long)e.last_time());
     const uint64_t validate_ns = sw.lap();
+    uint64_t convert_ns = 0;
     st = guarded(tracker, [&] {
-        e.step(f.timestamp_us, ctrack::Planes::of(f), ctrack::ImageSize{f.width, f.height},
-               dets, n);
+        ctrack::Planes planes = ctrack::Planes::of(f);
+        if (ctrack::packed_rgb(f.format)) {
+            planes = ctrack::packed_to_i420(f, &tracker->converted);
+            convert_ns = sw.lap();
+        }
+        e.step(f.timestamp_us, planes, ctrack::ImageSize{f.width, f.height}, dets, n);
         return CT_OK;
     });
     if (st == CT_OK) {
         tracker->steps++;
         tracker->validate_ns += validate_ns;
-        tracker->feed_ns += validate_ns + sw.lap();
+        tracker->convert_ns += convert_ns;
+        tracker->feed_ns += validate_ns + convert_ns + sw.lap();
     }
     return st;
 }
@@ -242,6 +252,7 @@ const char *ct_stage_name(int stage)
     case CT_STAGE_BACKGROUND: return "background";
     case CT_STAGE_BLOBS: return "blobs";
     case CT_STAGE_CLASSIFY: return "classify";
+    case CT_STAGE_CONVERT: return "convert";
     default: return nullptr;
     }
 }
@@ -269,8 +280,10 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
         s.stage_ns[i] = e.stage_ns()[i];
     s.stage_ns[CT_STAGE_VALIDATE] = tracker->validate_ns;
+    s.stage_ns[CT_STAGE_CONVERT] = tracker->convert_ns;
     s.live_tracks = e.live_tracks();
-    s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes();
+    s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes() +
+                     tracker->converted.capacity() * sizeof(int16_t);
     s.mean_shift_runs = e.mean_shift_runs();
     s.ddis_runs = e.ddis_runs();
     s.template_builds = e.template_builds();

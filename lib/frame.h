@@ -3,8 +3,11 @@
 #define CTRACK_FRAME_H
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "ctrack/ctrack.h"
+#include "planes.h"
 
 namespace ctrack {
 
@@ -18,6 +21,16 @@ ct_frame default_frame();
 // The timestamp's order is the tracker's business. On failure writes a
 // message into msg and returns a status.
 int load_frame(const ct_frame *in, ct_frame *out, char *msg, size_t msg_len);
+
+// Whether a format is packed colour, which the library converts to planes.
+inline bool packed_rgb(uint32_t format)
+{
+    return format == CT_FORMAT_BGR24 || format == CT_FORMAT_RGB24;
+}
+
+// A loaded BGR24 or RGB24 frame converted to I420 planes in buf (resized to
+// fit, and working rows after them; the planes point into it).
+Planes packed_to_i420(const ct_frame &f, std::vector<int16_t> *buf);
 
 // Checks n detections: finite boxes of positive size, finite scores.
 int check_detections(const ct_detection *dets, size_t n, char *msg, size_t msg_len);

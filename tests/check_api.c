@@ -125,7 +125,7 @@ typedef struct {
     void (*spoil)(ct_frame *);
 } bad_frame;
 
-static uint8_t pixels[64 * 48 * 2];
+static uint8_t pixels[64 * 48 * 3];
 
 static void make_i420(ct_frame *f)
 {
@@ -150,6 +150,9 @@ static void i420_zero_width(ct_frame *f) { make_i420(f); f->width = 0; }
 static void i420_absurd_height(ct_frame *f) { make_i420(f); f->height = 1 << 20; }
 static void nv12_short_uv(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_NV12; f->strides[1] = 32; }
 static void gray_null(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_GRAY8; f->planes[0] = NULL; }
+static void bgr_short_stride(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_BGR24; f->strides[0] = 3 * 64 - 1; }
+static void rgb_null(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_RGB24; f->strides[0] = 3 * 64; f->planes[0] = NULL; }
+static void rgb_negative_stride(ct_frame *f) { make_i420(f); f->format = CT_FORMAT_RGB24; f->strides[0] = -3 * 64; }
 static void none_half_size(ct_frame *f) { f->width = 640; f->height = 0; }
 static void none_negative(ct_frame *f) { f->width = -5; f->height = -5; }
 
@@ -165,6 +168,10 @@ static const bad_frame bad_frames[] = {
     {"frame.width", CT_ERROR_INVALID_ARGUMENT, i420_absurd_height},
     {"frame.strides[1]", CT_ERROR_INVALID_ARGUMENT, nv12_short_uv},
     {"frame.planes[0]", CT_ERROR_INVALID_ARGUMENT, gray_null},
+    {"frame.strides[0]: 191 bytes is less than the plane's width, 192 bytes, of a 64x48 BGR24",
+     CT_ERROR_INVALID_ARGUMENT, bgr_short_stride},
+    {"frame.planes[0]: NULL for a RGB24 frame", CT_ERROR_INVALID_ARGUMENT, rgb_null},
+    {"frame.strides[0]", CT_ERROR_INVALID_ARGUMENT, rgb_negative_stride},
     {"frame.width", CT_ERROR_INVALID_ARGUMENT, none_half_size},
     {"frame.width", CT_ERROR_INVALID_ARGUMENT, none_negative},
 };
@@ -245,6 +252,18 @@ START_TEST(good_pixel_frames)
     f.strides[0] = 63;
     f.strides[1] = f.strides[2] = 32;
     f.timestamp_us = 3;
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    /* Packed colour (0.8.0), odd sizes too: 3 bytes a pixel. */
+    f.format = CT_FORMAT_BGR24;
+    f.planes[1] = f.planes[2] = NULL;
+    f.strides[0] = 3 * 63;
+    f.timestamp_us = 4;
+    ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+    f.format = CT_FORMAT_RGB24;
+    f.width = 64;
+    f.height = 48;
+    f.strides[0] = 3 * 64;
+    f.timestamp_us = 5;
     ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
     ct_tracker_destroy(t);
 }
@@ -365,7 +384,7 @@ static float odd_float(void)
 START_TEST(random_calls_keep_their_promises)
 {
     lcg_state = 2026;
-    static uint8_t buf[(200 + 16) * 160 * 2];
+    static uint8_t buf[(3 * 200 + 16) * 160 * 2];
     for (int run = 0; run < 24; run++) {
         ct_config c = test_config();
         c.source = (int32_t)(lcg() % 2);
@@ -382,16 +401,18 @@ START_TEST(random_calls_keep_their_promises)
                 w = 1 + (int)(lcg() % 200);
                 h = 1 + (int)(lcg() % 160);
             }
-            const int stride = w + (int)(lcg() % 3) * 8;
+            static const uint32_t formats[] = {CT_FORMAT_NONE, CT_FORMAT_I420, CT_FORMAT_NV12,
+                                               CT_FORMAT_GRAY8, CT_FORMAT_BGR24, CT_FORMAT_RGB24};
+            const uint32_t format = formats[lcg() % 6];
+            const int packed = format == CT_FORMAT_BGR24 || format == CT_FORMAT_RGB24;
+            const int stride = (packed ? 3 * w : w) + (int)(lcg() % 3) * 8;
             for (size_t i = 0; i < sizeof buf; i++)
                 buf[i] = (uint8_t)(60 + (i * 7 + (size_t)k * 13) % 40);
             for (int y = h / 4; y < h / 4 + h / 2; y++) /* something moving */
                 for (int x = (k * 3) % w; x < w && x < (k * 3) % w + w / 6 + 1; x++)
                     buf[(size_t)y * stride + x] = 230;
             ct_frame f = test_frame(ts, w, h);
-            static const uint32_t formats[] = {CT_FORMAT_NONE, CT_FORMAT_I420, CT_FORMAT_NV12,
-                                               CT_FORMAT_GRAY8};
-            f.format = formats[lcg() % 4];
+            f.format = format;
             f.planes[0] = buf;
             f.strides[0] = stride;
             f.planes[1] = buf + (size_t)stride * h;

@@ -136,8 +136,34 @@ END_TEST
 // background model's update and the templates' rebuilding must all be
 // undone, so that the tracks and candidates stay those of an undisturbed
 // tracker, to the byte.
-static void pixels_out_of_memory(int source)
+// The frame's pixels as packed BGR24 in bgr (BT.601 back from I420), for
+// the library's own conversion.
+static ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
 {
+    bgr->resize((size_t)3 * f.width * f.height);
+    auto clamp = [](int v) { return (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v); };
+    for (int y = 0; y < f.height; y++)
+        for (int x = 0; x < f.width; x++) {
+            const int c = f.planes[0][(size_t)y * f.strides[0] + x] - 16;
+            const int d = f.planes[1][(size_t)(y / 2) * f.strides[1] + x / 2] - 128;
+            const int e = f.planes[2][(size_t)(y / 2) * f.strides[2] + x / 2] - 128;
+            uint8_t *p = bgr->data() + 3 * ((size_t)y * f.width + x);
+            p[0] = clamp((298 * c + 516 * d + 128) / 256);
+            p[1] = clamp((298 * c - 100 * d - 208 * e + 128) / 256);
+            p[2] = clamp((298 * c + 409 * e + 128) / 256);
+        }
+    ct_frame out = f;
+    out.format = CT_FORMAT_BGR24;
+    out.planes[0] = bgr->data();
+    out.planes[1] = out.planes[2] = nullptr;
+    out.strides[0] = 3 * f.width;
+    out.strides[1] = out.strides[2] = 0;
+    return out;
+}
+
+static void pixels_out_of_memory(int source, bool packed = false)
+{
+    std::vector<uint8_t> bgr;
     ct_detfile df;
     load_detections("TUD-Campus", &df);
     char err[512];
@@ -158,6 +184,8 @@ static void pixels_out_of_memory(int source)
         ck_assert_msg(r >= 0, "%s", err);
         if (r == 0)
             break;
+        if (packed)
+            f = as_bgr24(f, &bgr);
         frames++;
         f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
         size_t n = 0;
@@ -210,6 +238,13 @@ START_TEST(detections_and_pixels_out_of_memory_changes_nothing)
 }
 END_TEST
 
+// Packed colour: the library's planes for it are one more allocation.
+START_TEST(bgr24_out_of_memory_changes_nothing)
+{
+    pixels_out_of_memory(CT_SOURCE_PIXELS, true);
+}
+END_TEST
+
 // In steady state, a feed makes no heap allocation at all.
 START_TEST(steady_state_does_not_allocate)
 {
@@ -258,6 +293,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, create_out_of_memory);
     tcase_add_test(tc, feed_out_of_memory_changes_nothing);
     tcase_add_test(tc, pixels_only_out_of_memory_changes_nothing);
+    tcase_add_test(tc, bgr24_out_of_memory_changes_nothing);
     tcase_add_test(tc, detections_and_pixels_out_of_memory_changes_nothing);
     tcase_add_test(tc, steady_state_does_not_allocate);
     suite_add_tcase(s, tc);

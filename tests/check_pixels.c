@@ -571,6 +571,140 @@ START_TEST(frames_with_and_without_pixels)
 }
 END_TEST
 
+/* Packed colour (0.8.0): an odd-sized BGR24 frame, with padding at the end
+ * of its rows, tracks exactly as the I420 frame the API documents it to be
+ * (BT.601, limited range, in integers; each chroma sample the mean of its
+ * 2x2 block, the last row and column repeated), and the same picture in
+ * RGB24 order tracks the same. The conversion is written out here on its
+ * own, per pixel. */
+#define PW 317
+#define PH 237
+#define PSTRIDE (3 * PW + 5)
+
+/* A person at (cx, cy), and a second one in checked clothes (red and green
+ * checks) walking in from the bottom right corner, over the image's last row
+ * and column, where an odd size leaves a chroma block half outside. */
+static void draw_packed(uint8_t *bgr, double cx, double cy, double cx2)
+{
+    for (int y = 0; y < PH; y++)
+        for (int x = 0; x < PW; x++) {
+            uint8_t *p = bgr + (size_t)y * PSTRIDE + 3 * (size_t)x;
+            const int t = (((x / 8) + (y / 6)) % 2) * 40 + (x * 7 + y * 13) % 11;
+            p[0] = (uint8_t)(90 + t);      /* a bluish grey texture */
+            p[1] = (uint8_t)(100 + t);
+            p[2] = (uint8_t)(80 + t / 2);
+            const double a = (x - cx) / 15, b = (y - cy) / 35;
+            if (a * a + b * b <= 1) {      /* red shirt, blue trousers */
+                const bool top = y < cy;
+                p[0] = (uint8_t)(top ? 40 : 160 + (x * 5 + y * 3) % 9);
+                p[1] = (uint8_t)(top ? 30 : 50);
+                p[2] = (uint8_t)(top ? 190 + (x * 5 + y * 3) % 9 : 30);
+            }
+            const double a2 = (x - cx2) / 15, b2 = (y - (PH - 25)) / 35;
+            if (a2 * a2 + b2 * b2 <= 1) {
+                p[0] = 40;
+                p[1] = (uint8_t)((x + y) % 2 ? 200 : 40);
+                p[2] = (uint8_t)((x + y) % 2 ? 40 : 200);
+            }
+        }
+}
+
+static void bgr_to_i420_reference(const uint8_t *bgr, uint8_t *y, uint8_t *u, uint8_t *v)
+{
+    const int cw = (PW + 1) / 2, ch = (PH + 1) / 2;
+    for (int r = 0; r < PH; r++)
+        for (int c = 0; c < PW; c++) {
+            const uint8_t *p = bgr + (size_t)r * PSTRIDE + 3 * (size_t)c;
+            y[r * PW + c] = (uint8_t)(((66 * p[2] + 129 * p[1] + 25 * p[0] + 128) >> 8) + 16);
+        }
+    for (int r = 0; r < ch; r++)
+        for (int c = 0; c < cw; c++) {
+            int su = 0, sv = 0;
+            for (int k = 0; k < 4; k++) {
+                const int rr = 2 * r + k / 2 < PH ? 2 * r + k / 2 : PH - 1;
+                const int cc = 2 * c + k % 2 < PW ? 2 * c + k % 2 : PW - 1;
+                const uint8_t *p = bgr + (size_t)rr * PSTRIDE + 3 * (size_t)cc;
+                const int B = p[0], G = p[1], R = p[2];
+                /* floor((...) / 256) + 128, written without shifting a
+                 * negative number */
+                su += (int)floor((-38 * R - 74 * G + 112 * B + 128) / 256.0) + 128;
+                sv += (int)floor((112 * R - 94 * G - 18 * B + 128) / 256.0) + 128;
+            }
+            u[r * cw + c] = (uint8_t)((su + 2) / 4);
+            v[r * cw + c] = (uint8_t)((sv + 2) / 4);
+        }
+}
+
+START_TEST(packed_colour_frames_track_as_their_planes)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    cfg.candidate_min_score = cfg.low_score; /* every candidate may start a track */
+    ct_tracker *tb = test_tracker(&cfg), *tr = test_tracker(&cfg), *ti = test_tracker(&cfg);
+    static uint8_t bgr[PSTRIDE * PH], rgb[PSTRIDE * PH];
+    static uint8_t y[PW * PH], u[((PW + 1) / 2) * ((PH + 1) / 2)], v[sizeof u];
+    size_t seen = 0;
+    for (int k = 0; k < 30; k++) {
+        draw_packed(bgr, 40 + 7.0 * k, 120, PW - 5 - 4.0 * k);
+        for (int r = 0; r < PH; r++)
+            for (size_t i = (size_t)r * PSTRIDE; i < (size_t)r * PSTRIDE + 3 * PW; i += 3) {
+                rgb[i] = bgr[i + 2];
+                rgb[i + 1] = bgr[i + 1];
+                rgb[i + 2] = bgr[i];
+            }
+        bgr_to_i420_reference(bgr, y, u, v);
+        ct_frame fb = test_frame(k * SEC / 10, PW, PH), fr = fb, fi = fb;
+        fb.format = CT_FORMAT_BGR24;
+        fb.planes[0] = bgr;
+        fb.strides[0] = PSTRIDE;
+        fr.format = CT_FORMAT_RGB24;
+        fr.planes[0] = rgb;
+        fr.strides[0] = PSTRIDE;
+        fi.format = CT_FORMAT_I420;
+        fi.planes[0] = y;
+        fi.planes[1] = u;
+        fi.planes[2] = v;
+        fi.strides[0] = PW;
+        fi.strides[1] = fi.strides[2] = (PW + 1) / 2;
+        ck_assert_int_eq(ct_tracker_feed(tb, &fb, NULL, 0), CT_OK);
+        ck_assert_int_eq(ct_tracker_feed(tr, &fr, NULL, 0), CT_OK);
+        ck_assert_int_eq(ct_tracker_feed(ti, &fi, NULL, 0), CT_OK);
+        ct_track ob[64], orr[64], oi[64];
+        ct_candidate cb[32], cr[32], ci[32];
+        size_t nb, nr, ni, mb, mr, mi;
+        ck_assert_int_eq(ct_tracker_get_tracks(tb, ob, 64, sizeof ob[0], &nb), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_tracks(tr, orr, 64, sizeof orr[0], &nr), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_tracks(ti, oi, 64, sizeof oi[0], &ni), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_candidates(tb, cb, 32, sizeof cb[0], &mb), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_candidates(tr, cr, 32, sizeof cr[0], &mr), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_candidates(ti, ci, 32, sizeof ci[0], &mi), CT_OK);
+        ck_assert_msg(nb == ni && mb == mi, "step %d: BGR24 %zu tracks %zu candidates, "
+                      "I420 %zu and %zu", k, nb, mb, ni, mi);
+        ck_assert_uint_eq(nr, nb);
+        ck_assert_uint_eq(mr, mb);
+        ck_assert_mem_eq(ob, oi, nb * sizeof ob[0]);
+        ck_assert_mem_eq(orr, oi, nb * sizeof ob[0]);
+        ck_assert_mem_eq(cb, ci, mb * sizeof cb[0]);
+        ck_assert_mem_eq(cr, ci, mb * sizeof cb[0]);
+        seen += nb;
+    }
+    ck_assert_msg(seen > 0, "no track: the comparison would prove nothing");
+    /* The conversion is timed as a stage of its own, and its planes count
+     * in the tracker's memory. */
+    ct_stats sb, si;
+    sb.size = si.size = sizeof sb;
+    ck_assert_int_eq(ct_tracker_get_stats(tb, &sb), CT_OK);
+    ck_assert_int_eq(ct_tracker_get_stats(ti, &si), CT_OK);
+    ck_assert_uint_gt(sb.stage_ns[CT_STAGE_CONVERT], 0);
+    ck_assert_uint_eq(si.stage_ns[CT_STAGE_CONVERT], 0);
+    ck_assert_uint_ge(sb.memory_bytes, si.memory_bytes + sizeof y + 2 * sizeof u);
+    ck_assert_str_eq(ct_stage_name(CT_STAGE_CONVERT), "convert");
+    ct_tracker_destroy(tb);
+    ct_tracker_destroy(tr);
+    ct_tracker_destroy(ti);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -587,6 +721,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, pixels_alone);
     tcase_add_test(tc, a_new_frame_size_starts_the_model_again);
     tcase_add_test(tc, verify_detections_rejects_a_car);
+    tcase_add_test(tc, packed_colour_frames_track_as_their_planes);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -29,8 +29,8 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 7
-#define CT_VERSION_PATCH 1
+#define CT_VERSION_MINOR 8
+#define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
 #define CT_ABI_VERSION 1
@@ -205,7 +205,12 @@ typedef enum ct_format {
     CT_FORMAT_NONE = 0,                         /* no pixels this step */
     CT_FORMAT_I420 = 0x30323449,                /* 'I420': Y, U, V planes */
     CT_FORMAT_NV12 = 0x3231564E,                /* 'NV12': Y, interleaved UV */
-    CT_FORMAT_GRAY8 = 0x30303859                /* 'Y800': Y only */
+    CT_FORMAT_GRAY8 = 0x30303859,               /* 'Y800': Y only */
+    /* Packed 8-bit colour, one plane (0.8.0): the library converts it to
+     * I420 planes of its own (BT.601, limited range, chroma the mean of
+     * each 2x2 block) before it reads the pixels. */
+    CT_FORMAT_BGR24 = 0x47423432,               /* '24BG': B, G, R bytes (OpenCV's order) */
+    CT_FORMAT_RGB24 = 0x20776172                /* 'raw ': R, G, B bytes */
 } ct_format;
 
 typedef struct ct_frame {
@@ -218,7 +223,8 @@ typedef struct ct_frame {
     int32_t width;
     int32_t height;
     /* Plane pointers and strides in bytes (strides > 0). I420: Y, U, V with
-     * chroma planes of (width+1)/2 x (height+1)/2. NV12: Y, UV. GRAY8: Y. */
+     * chroma planes of (width+1)/2 x (height+1)/2. NV12: Y, UV. GRAY8: Y.
+     * BGR24, RGB24: the pixels, 3 bytes each (strides[0] >= 3 * width). */
     const uint8_t *planes[3];
     int32_t strides[3];
     /* Capture time in microseconds; must increase from one feed to the
@@ -354,7 +360,8 @@ typedef enum ct_stage {
     CT_STAGE_APPEARANCE = 6, /* descriptors, DDIS, templates (0.3.0) */
     CT_STAGE_BACKGROUND = 7, /* background model, foreground mask (0.4.0) */
     CT_STAGE_BLOBS = 8,      /* morphology, contours, merges and splits */
-    CT_STAGE_CLASSIFY = 9    /* contour template and region votes */
+    CT_STAGE_CLASSIFY = 9,   /* contour template and region votes */
+    CT_STAGE_CONVERT = 10    /* packed BGR24 / RGB24 to planes (0.8.0) */
 } ct_stage;
 
 #define CT_STATS_MAX_STAGES 16

@@ -172,6 +172,8 @@ class Tracker:
         if st != _abi.OK:
             raise _status_error(self._lib, st, "ct_tracker_create failed")
         self._t = handle
+        # Libraries from 0.8.0 take packed BGR and RGB frames themselves.
+        self._packed = self._lib.ct_version_number() >= 0x000800
         self._last_ts = None
         self._size = (0, 0)
         self._out = (_abi.Track * 64)()
@@ -211,8 +213,11 @@ class Tracker:
         """Runs one step and returns the reported tracks (TRACK_DTYPE).
 
         frame: None (no pixels), an HxW uint8 grey image, an (H*3/2)xW uint8
-            array with format='i420' or 'nv12', or an HxWx3 uint8 BGR image
-            (converted to I420 once, see bgr_to_i420).
+            array with format='i420' or 'nv12', or an HxWx3 uint8 colour
+            image: BGR (OpenCV's order; format None or 'bgr') or RGB
+            (format='rgb'). The library converts a colour image to I420 as
+            bgr_to_i420 does (in C, from ctrack 0.8.0; with an older library
+            this package converts it with numpy, some 20 times slower).
         detections: None or an (N, 5) / (N, 6) array of
             [left, top, width, height, score(, class)] in pixels.
         timestamp: seconds; None means one frame period (1 / fps) after the
@@ -307,11 +312,22 @@ class Tracker:
         if a.dtype != np.uint8:
             raise ValueError("frame: dtype %s; ctrack reads uint8 pixels" % a.dtype)
         if a.ndim == 3:
-            if a.shape[2] != 3 or format is not None:
-                raise ValueError("frame: a 3-D frame must be HxWx3 BGR (no format); got shape %s"
+            if a.shape[2] != 3:
+                raise ValueError("frame: a 3-D frame must be HxWx3 BGR or RGB; got shape %s"
                                  % (a.shape,))
+            if format not in (None, "bgr", "rgb"):
+                raise ValueError("format: %r is not 'bgr' or 'rgb' for an HxWx3 frame"
+                                 % (format,))
             h, w = a.shape[:2]
-            a = bgr_to_i420(a)
+            if self._packed:
+                if a.strides[2] != 1 or a.strides[1] != 3 or a.strides[0] < 3 * w:
+                    a = np.ascontiguousarray(a)
+                f.format = _abi.FORMAT_RGB24 if format == "rgb" else _abi.FORMAT_BGR24
+                f.width, f.height = w, h
+                f.planes[0] = a.ctypes.data
+                f.strides[0] = a.strides[0]
+                return a
+            a = bgr_to_i420(a[..., ::-1] if format == "rgb" else a)
             fmt = "i420"
             h2 = (h + 1) // 2 * 2
             w2 = (w + 1) // 2 * 2

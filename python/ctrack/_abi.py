@@ -9,7 +9,7 @@ ABI_VERSION = 1
 # The version of include/ctrack/ctrack.h these mirrors follow, and the Python
 # package's (python/pyproject.toml); test_abi.py checks it against the
 # library's.
-VERSION = "0.7.1"
+VERSION = "0.8.0"
 
 OK = 0
 ERROR_INVALID_ARGUMENT = -1
@@ -31,6 +31,8 @@ FORMAT_NONE = 0
 FORMAT_I420 = fourcc(b"I420")
 FORMAT_NV12 = fourcc(b"NV12")
 FORMAT_GRAY8 = fourcc(b"Y800")
+FORMAT_BGR24 = fourcc(b"24BG")  # 0.8.0
+FORMAT_RGB24 = fourcc(b"raw ")  # 0.8.0
 
 TRACK_TENTATIVE = 0
 TRACK_CONFIRMED = 1

@@ -53,6 +53,15 @@ int main(void)
     FIELD(ct_candidate, voters); FIELD(ct_candidate, region_distance);
     FIELD(ct_candidate, fill);
     FIELD(ct_candidate, top_width);
+    /* The constants the binding mirrors. */
+    printf("}, \"Constants\": {\"FORMAT_NONE\": %u, \"FORMAT_I420\": %u, "
+           "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "
+           "\"FORMAT_RGB24\": %u, \"SOURCE_DETECTIONS\": %d, \"SOURCE_PIXELS\": %d, "
+           "\"TRACK_TENTATIVE\": %d, \"TRACK_CONFIRMED\": %d, \"TRACK_LOST\": %d",
+           (unsigned)CT_FORMAT_NONE, (unsigned)CT_FORMAT_I420, (unsigned)CT_FORMAT_NV12,
+           (unsigned)CT_FORMAT_GRAY8, (unsigned)CT_FORMAT_BGR24, (unsigned)CT_FORMAT_RGB24,
+           (int)CT_SOURCE_DETECTIONS, (int)CT_SOURCE_PIXELS, (int)CT_TRACK_TENTATIVE,
+           (int)CT_TRACK_CONFIRMED, (int)CT_TRACK_LOST);
     printf("}}\n");
     return 0;
 }

@@ -25,6 +25,12 @@ def test_struct_layout(layout, name):
     assert got == want
 
 
+def test_constants(layout):
+    """The binding's formats, sources and track states are the header's."""
+    got = {name: getattr(_abi, name) for name in layout["Constants"]}
+    assert got == layout["Constants"]
+
+
 def test_version_is_the_header_s():
     """_abi.py (and so the pip package) follows the header it mirrors."""
     import ctrack

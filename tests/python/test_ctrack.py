@@ -104,6 +104,81 @@ def test_bgr_conversion_matches_bt601():
     assert ctrack.bgr_to_i420(bgr)[0, 0] == 16
 
 
+def tud_bgr():
+    """TUD-Campus's frames as ffmpeg decodes them to BGR."""
+    n, fps, w, h = seqinfo("TUD-Campus")
+    raw = subprocess.run(["ffmpeg", "-v", "error", "-i",
+                          os.path.join(DATA, "TUD-Campus", "video.mp4"), "-f", "rawvideo",
+                          "-pix_fmt", "bgr24", "-"], check=True, capture_output=True).stdout
+    return np.frombuffer(raw, np.uint8).reshape(-1, h, w, 3), fps
+
+
+def test_colour_frames_are_converted_by_the_library():
+    """BGR frames go to the library packed (0.8.0), which converts them as
+    bgr_to_i420 does: on TUD-Campus from the pixels alone, every step's
+    tracks and candidates are those of the I420 frames bgr_to_i420 makes,
+    and the same pictures in RGB order (format='rgb') give them too, as do
+    rows with padding between them; upside down, as their I420 does."""
+    frames, fps = tud_bgr()
+    assert len(frames) == 71
+    runs = {name: ctrack.Tracker(fps=fps, source=ctrack.SOURCE_PIXELS)
+            for name in ("bgr", "i420", "rgb", "view", "flipped", "flipped i420")}
+    assert runs["bgr"]._packed
+    seen = 0
+    for bgr in frames:
+        out = {}
+        for name, t in runs.items():
+            if name == "bgr":
+                tracks = t.feed(bgr)
+            elif name == "i420":
+                tracks = t.feed(ctrack.bgr_to_i420(bgr), format="i420")
+            elif name == "rgb":  # a view whose channels run backwards: copied first
+                tracks = t.feed(bgr[..., ::-1], format="rgb")
+            elif name == "view":  # rows with padding between them: read through their stride
+                padded = np.zeros((bgr.shape[0], bgr.shape[1] + 7, 3), np.uint8)
+                padded[:, :bgr.shape[1]] = bgr
+                tracks = t.feed(padded[:, :bgr.shape[1]], format="bgr")
+            elif name == "flipped":  # upside down, rows running backwards: copied first
+                tracks = t.feed(bgr[::-1])
+            else:
+                tracks = t.feed(ctrack.bgr_to_i420(bgr[::-1]), format="i420")
+            out[name] = (tracks.tobytes(), t.candidates().tobytes())
+        assert out["bgr"] == out["i420"] == out["rgb"] == out["view"]
+        assert out["flipped"] == out["flipped i420"]
+        seen += len(out["bgr"][0])
+    assert seen > 100
+    assert runs["bgr"].stats()["stages"]["convert"] > 0
+    assert runs["i420"].stats()["stages"]["convert"] == 0
+    for t in runs.values():
+        t.close()
+
+
+def test_odd_colour_frames_match_bgr_to_i420():
+    """Odd sizes: the library repeats the last row and column, as the padding
+    of bgr_to_i420 does."""
+    frames, _ = tud_bgr()
+    with ctrack.Tracker(source=ctrack.SOURCE_PIXELS) as a, \
+            ctrack.Tracker(source=ctrack.SOURCE_PIXELS) as b:
+        b._packed = False  # this package's own conversion, as with a library before 0.8.0
+        for bgr in frames[:30]:
+            odd = bgr[:479, :639]
+            a.feed(odd)
+            b.feed(odd)
+            assert a.candidates().tobytes() == b.candidates().tobytes()
+            assert a.tracks().tobytes() == b.tracks().tobytes()
+
+
+def test_bad_colour_frames():
+    bgr = np.zeros((48, 64, 3), np.uint8)
+    with ctrack.Tracker() as t:
+        with pytest.raises(ValueError, match="'bgr' or 'rgb'"):
+            t.feed(bgr, format="i420")
+        with pytest.raises(ValueError, match="HxWx3"):
+            t.feed(np.zeros((48, 64, 4), np.uint8))
+        with pytest.raises(ctrack.CtrackError, match="frame.width"):
+            t.feed(np.zeros((0, 64, 3), np.uint8))
+
+
 def test_timestamps():
     with ctrack.Tracker(fps=10) as t:
         t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=5.0)
