@@ -200,10 +200,12 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     const uint64_t validate_ns = sw.lap();
     uint64_t convert_ns = 0;
     st = guarded(tracker, [&] {
-        ctrack::Planes planes = ctrack::Planes::of(f);
+        ctrack::Planes planes;
         if (ctrack::packed_rgb(f.format)) {
             planes = ctrack::packed_to_i420(f, &tracker->converted);
             convert_ns = sw.lap();
+        } else {
+            planes = ctrack::Planes::of(f);
         }
         e.step(f.timestamp_us, planes, ctrack::ImageSize{f.width, f.height}, dets, n);
         return CT_OK;

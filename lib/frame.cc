@@ -105,18 +105,19 @@ int load_frame(const ct_frame *in, ct_frame *out, char *msg, size_t msg_len)
 
 namespace {
 
-// One row of packed pixels (R at byte ri, B at byte bi): its luma, and each
-// pixel's chroma before the 2x2 means. BT.601, limited range, in integers:
-// OpenCV's COLOR_BGR2YUV_I420 up to rounding, and exactly the Python
-// binding's bgr_to_i420(). Adding 128 << 8 before the shift keeps the chroma
-// sums positive, so that the shift is a floor in C as in numpy. Unit-stride
-// outputs and no branches: the compiler turns the loop into vector code.
 #if defined(__GNUC__)
 #define CT_ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #define CT_ALWAYS_INLINE inline
 #endif
 
+// One row of packed pixels (R at byte ri, B at byte bi): its luma, and each
+// pixel's chroma before the 2x2 means. BT.601, limited range, in integers:
+// OpenCV's COLOR_BGR2YUV_I420 up to rounding, and exactly the Python
+// binding's bgr_to_i420(). Adding 128 << 8 before the shift keeps the chroma
+// sums positive, so that the shift is a floor in C as in numpy. Unit-stride
+// outputs and no branches, so that the loop vectorises wherever the target
+// can read every third byte (below).
 template <int ri, int bi>
 CT_ALWAYS_INLINE void
 convert_row(const uint8_t *__restrict src, int w, uint8_t *__restrict y, int16_t *__restrict u,

@@ -19,7 +19,8 @@ struct Planes {
 
     bool empty() const { return y == nullptr; }
 
-    // Views over a frame that load_frame() accepted; nothing is copied.
+    // Views over a planar frame that load_frame() accepted; nothing is
+    // copied. (Packed BGR24 and RGB24 are converted first: packed_to_i420().)
     static Planes of(const ct_frame &f)
     {
         Planes p;

@@ -217,7 +217,8 @@ class Tracker:
             image: BGR (OpenCV's order; format None or 'bgr') or RGB
             (format='rgb'). The library converts a colour image to I420 as
             bgr_to_i420 does (in C, from ctrack 0.8.0; with an older library
-            this package converts it with numpy, some 20 times slower).
+            this package converts it with numpy, and a step at 768x576 takes
+            some 20 times longer).
         detections: None or an (N, 5) / (N, 6) array of
             [left, top, width, height, score(, class)] in pixels.
         timestamp: seconds; None means one frame period (1 / fps) after the
