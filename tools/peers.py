@@ -211,41 +211,39 @@ class Mog2Blobs:
         return out
 
 
-def mog2_iou(y4m_path, n_frames=None):
-    """The pixels-only baseline over a Y4M file."""
+def _on_frames(y4m_path, n_frames, make_step):
+    """Runs a tracker over the frames of a Y4M file: make_step(width, height)
+    gives step(k, bgr) (frames from 1, BGR as OpenCV converts I420), which
+    returns (id, box) pairs. Returns MOTChallenge rows and the time spent
+    in step."""
     import cv2
     from y4m import open_y4m
     w, h, _, frames = open_y4m(y4m_path)
     n = len(frames) if n_frames is None else min(n_frames, len(frames))
-    blobs, tracker = Mog2Blobs(), IoUTracker()
+    step = make_step(w, h)
     rows, spent = [], 0.0
     for k in range(1, n + 1):
-        i420 = np.asarray(frames[k - 1]).reshape(h * 3 // 2, w)
-        bgr = cv2.cvtColor(i420, cv2.COLOR_YUV2BGR_I420)
+        bgr = cv2.cvtColor(np.asarray(frames[k - 1]).reshape(h * 3 // 2, w),
+                           cv2.COLOR_YUV2BGR_I420)
         t0 = time.perf_counter()
-        out = tracker.update(blobs.boxes(bgr))
+        out = step(k, bgr)
         spent += time.perf_counter() - t0
-        for tid, (x, y, bw, bh) in out:
-            rows.append((k, tid, x, y, bw, bh))
+        rows += [(k, tid, x, y, bw, bh) for tid, (x, y, bw, bh) in out]
     return rows, spent
+
+
+def mog2_iou(y4m_path, n_frames=None):
+    """The pixels-only baseline over a Y4M file."""
+    def make_step(w, h):
+        blobs, tracker = Mog2Blobs(), IoUTracker()
+        return lambda k, bgr: tracker.update(blobs.boxes(bgr))
+    return _on_frames(y4m_path, n_frames, make_step)
 
 
 def opencv_trackers(kind, y4m_path, dets_by_frame, n_frames=None):
     """OpenCV's KCF or CSRT tracker per person, on the public detections and
     the frames of a Y4M file (OpenCVTrackers)."""
-    import cv2
-    from y4m import open_y4m
-    w, h, _, frames = open_y4m(y4m_path)
-    n = len(frames) if n_frames is None else min(n_frames, len(frames))
-    tracker = OpenCVTrackers(kind, w, h)
-    rows, spent = [], 0.0
-    for k in range(1, n + 1):
-        bgr = cv2.cvtColor(np.asarray(frames[k - 1]).reshape(h * 3 // 2, w),
-                           cv2.COLOR_YUV2BGR_I420)
-        d = dets_by_frame.get(k, np.zeros((0, 5)))
-        t0 = time.perf_counter()
-        out = tracker.update(d[:, :4], bgr)
-        spent += time.perf_counter() - t0
-        for tid, (x, y, bw, bh) in out:
-            rows.append((k, tid, x, y, bw, bh))
-    return rows, spent
+    def make_step(w, h):
+        tracker = OpenCVTrackers(kind, w, h)
+        return lambda k, bgr: tracker.update(dets_by_frame.get(k, np.zeros((0, 5)))[:, :4], bgr)
+    return _on_frames(y4m_path, n_frames, make_step)
