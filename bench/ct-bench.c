@@ -144,8 +144,8 @@ static video load_video(const char *path, int max_frames)
     return v;
 }
 
-/* The same frames as packed BGR (BT.601 back from I420), as a host whose
- * camera or decoder gives BGR hands them over. */
+/* The same frames as packed BGR, as a host whose camera or decoder gives
+ * BGR hands them over. */
 static video to_bgr24(const video *v)
 {
     video b = *v;
@@ -155,19 +155,17 @@ static video to_bgr24(const video *v)
     const size_t luma = (size_t)v->width * v->height;
     const size_t chroma = (size_t)((v->width + 1) / 2) * ((v->height + 1) / 2);
     for (int k = 0; k < v->frames; k++) {
-        const uint8_t *y = v->data + v->bytes * k, *u = y + luma, *w = u + chroma;
-        uint8_t *out = b.data + b.bytes * k;
-        for (int r = 0; r < v->height; r++)
-            for (int c = 0; c < v->width; c++) {
-                const size_t ci = (size_t)(r / 2) * ((v->width + 1) / 2) + c / 2;
-                const int cy = y[(size_t)r * v->width + c] - 16, cu = u[ci] - 128,
-                          cv = w[ci] - 128;
-                const int bgr[3] = {(298 * cy + 516 * cu + 128) / 256,
-                                    (298 * cy - 100 * cu - 208 * cv + 128) / 256,
-                                    (298 * cy + 409 * cv + 128) / 256};
-                for (int i = 0; i < 3; i++)
-                    *out++ = (uint8_t)(bgr[i] < 0 ? 0 : bgr[i] > 255 ? 255 : bgr[i]);
-            }
+        ct_frame f;
+        ct_frame_default(&f, sizeof f);
+        f.format = CT_FORMAT_I420;
+        f.width = v->width;
+        f.height = v->height;
+        f.planes[0] = v->data + v->bytes * k;
+        f.planes[1] = f.planes[0] + luma;
+        f.planes[2] = f.planes[1] + chroma;
+        f.strides[0] = v->width;
+        f.strides[1] = f.strides[2] = (v->width + 1) / 2;
+        ct_i420_to_bgr24(&f, b.data + b.bytes * k);
     }
     return b;
 }

@@ -136,22 +136,12 @@ END_TEST
 // background model's update and the templates' rebuilding must all be
 // undone, so that the tracks and candidates stay those of an undisturbed
 // tracker, to the byte.
-// The frame's pixels as packed BGR24 in bgr (BT.601 back from I420), for
-// the library's own conversion.
+// The frame's pixels as packed BGR24 in bgr, for the library's own
+// conversion.
 static ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
 {
     bgr->resize((size_t)3 * f.width * f.height);
-    auto clamp = [](int v) { return (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v); };
-    for (int y = 0; y < f.height; y++)
-        for (int x = 0; x < f.width; x++) {
-            const int c = f.planes[0][(size_t)y * f.strides[0] + x] - 16;
-            const int d = f.planes[1][(size_t)(y / 2) * f.strides[1] + x / 2] - 128;
-            const int e = f.planes[2][(size_t)(y / 2) * f.strides[2] + x / 2] - 128;
-            uint8_t *p = bgr->data() + 3 * ((size_t)y * f.width + x);
-            p[0] = clamp((298 * c + 516 * d + 128) / 256);
-            p[1] = clamp((298 * c - 100 * d - 208 * e + 128) / 256);
-            p[2] = clamp((298 * c + 409 * e + 128) / 256);
-        }
+    ct_i420_to_bgr24(&f, bgr->data());
     ct_frame out = f;
     out.format = CT_FORMAT_BGR24;
     out.planes[0] = bgr->data();

@@ -282,3 +282,21 @@ void ct_input_close(ct_input *in)
     free(in->buf);
     free(in);
 }
+
+static uint8_t clamp_byte(int v)
+{
+    return (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+}
+
+void ct_i420_to_bgr24(const ct_frame *f, uint8_t *out)
+{
+    for (int y = 0; y < f->height; y++)
+        for (int x = 0; x < f->width; x++) {
+            const int c = f->planes[0][(size_t)y * f->strides[0] + x] - 16;
+            const int d = f->planes[1][(size_t)(y / 2) * f->strides[1] + x / 2] - 128;
+            const int e = f->planes[2][(size_t)(y / 2) * f->strides[2] + x / 2] - 128;
+            *out++ = clamp_byte((298 * c + 516 * d + 128) / 256);
+            *out++ = clamp_byte((298 * c - 100 * d - 208 * e + 128) / 256);
+            *out++ = clamp_byte((298 * c + 409 * e + 128) / 256);
+        }
+}

@@ -45,6 +45,10 @@ void ct_input_close(ct_input *in);
 /* Bytes of one frame of the given format and size (0 for bad values). */
 size_t ct_frame_bytes(uint32_t format, int width, int height);
 
+/* The I420 frame f as packed BGR (BT.601 back from limited range) in out,
+ * 3 * width bytes a row: the packed frames of the tests and benchmarks. */
+void ct_i420_to_bgr24(const ct_frame *f, uint8_t *out);
+
 #ifdef __cplusplus
 }
 #endif
