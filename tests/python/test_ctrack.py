@@ -104,8 +104,10 @@ def test_bgr_conversion_matches_bt601():
     assert ctrack.bgr_to_i420(bgr)[0, 0] == 16
 
 
+@pytest.fixture(scope="module")
 def tud_bgr():
-    """TUD-Campus's frames as ffmpeg decodes them to BGR."""
+    """TUD-Campus's frames as ffmpeg decodes them to BGR (once for the
+    module), and its frame rate."""
     n, fps, w, h = seqinfo("TUD-Campus")
     raw = subprocess.run(["ffmpeg", "-v", "error", "-i",
                           os.path.join(DATA, "TUD-Campus", "video.mp4"), "-f", "rawvideo",
@@ -113,13 +115,13 @@ def tud_bgr():
     return np.frombuffer(raw, np.uint8).reshape(-1, h, w, 3), fps
 
 
-def test_colour_frames_are_converted_by_the_library():
+def test_colour_frames_are_converted_by_the_library(tud_bgr):
     """BGR frames go to the library packed (0.8.0), which converts them as
     bgr_to_i420 does: on TUD-Campus from the pixels alone, every step's
     tracks and candidates are those of the I420 frames bgr_to_i420 makes,
     and the same pictures in RGB order (format='rgb') give them too, as do
     rows with padding between them; upside down, as their I420 does."""
-    frames, fps = tud_bgr()
+    frames, fps = tud_bgr
     assert len(frames) == 71
     runs = {name: ctrack.Tracker(fps=fps, source=ctrack.SOURCE_PIXELS)
             for name in ("bgr", "i420", "rgb", "view", "flipped", "flipped i420")}
@@ -153,10 +155,10 @@ def test_colour_frames_are_converted_by_the_library():
         t.close()
 
 
-def test_odd_colour_frames_match_bgr_to_i420():
+def test_odd_colour_frames_match_bgr_to_i420(tud_bgr):
     """Odd sizes: the library repeats the last row and column, as the padding
     of bgr_to_i420 does."""
-    frames, _ = tud_bgr()
+    frames, _ = tud_bgr
     with ctrack.Tracker(source=ctrack.SOURCE_PIXELS) as a, \
             ctrack.Tracker(source=ctrack.SOURCE_PIXELS) as b:
         b._packed = False  # this package's own conversion, as with a library before 0.8.0
