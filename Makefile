@@ -12,17 +12,17 @@ all: deps $(BUILD)/build.ninja
 	meson compile -C $(BUILD)
 
 deps:
-	@tools/install-deps.sh --check 2>/dev/null || tools/install-deps.sh
+	@scripts/install-deps.sh --check 2>/dev/null || scripts/install-deps.sh
 
 $(BUILD)/build.ninja: | deps
 	meson setup $(BUILD) --prefix=$(PREFIX) $(MESON_OPTS)
 
 check: all
 	@status=0; meson test -C $(BUILD) --print-errorlogs || status=$$?; \
-	python3 tools/test-summary.py $(BUILD)/meson-logs/testlog.json; exit $$status
+	python3 scripts/test-summary.py $(BUILD)/meson-logs/testlog.json; exit $$status
 
 demo: all
-	tools/demo.sh $(BUILD)
+	scripts/demo.sh $(BUILD)
 
 # The C suites, the CLI, the Python tests and the real-data replay again,
 # built with AddressSanitizer and UndefinedBehaviorSanitizer, which stop at
@@ -48,9 +48,9 @@ install: all
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD)
 
-# Both run in their own venv (tools/venv.sh eval), created on first use.
+# Both run in their own venv (scripts/venv.sh eval), created on first use.
 eval: all
-	"$$(tools/venv.sh eval)" tools/eval.py $(BUILD)
+	"$$(scripts/venv.sh eval)" eval/eval.py $(BUILD)
 
 bench: all
-	"$$(tools/venv.sh eval)" bench/bench.py $(BUILD)
+	"$$(scripts/venv.sh eval)" bench/bench.py $(BUILD)

@@ -21,10 +21,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
-sys.path.insert(0, os.path.join(TOP, "tools"))
-import peers  # noqa: E402
-from eval import cache_dir, load_dets, video  # noqa: E402
-from y4m import open_y4m  # noqa: E402
+from cteval import peers
+from cteval.data import cache_dir, load_dets, video
+from cteval.y4m import open_y4m
 
 DATA = os.path.join(TOP, "tests", "data", "mot15")
 PETS_DET = os.path.join(DATA, "PETS09-S2L1", "det", "det.txt")

@@ -14,8 +14,8 @@
 #include "ctrack/ctrack.h"
 #include "alloc_count.h"
 #include "detfile.h"
-#include "input.h"
-#include "peakmem.h"
+#include "video.h"
+#include "progress.h"
 
 /* Every heap allocation of the process is counted by alloc_count.c. */
 
@@ -33,7 +33,7 @@ typedef struct {
     ct_detection *dets;
 } sequence;
 
-static sequence from_detfile(ct_detfile *df, double sx, double sy)
+static sequence from_detfile(det_file *df, double sx, double sy)
 {
     sequence s;
     s.frames = df->max_frame;
@@ -44,7 +44,7 @@ static sequence from_detfile(ct_detfile *df, double sx, double sy)
     size_t at = 0;
     for (int k = 1; k <= s.frames; k++) {
         size_t n;
-        const ct_detection *d = ct_detfile_frame(df, k, &n);
+        const ct_detection *d = detfile_frame(df, k, &n);
         s.start[k] = at;
         s.count[k] = n;
         for (size_t i = 0; i < n; i++, at++) {
@@ -118,21 +118,21 @@ static video load_video(const char *path, int max_frames)
 {
     video v;
     memset(&v, 0, sizeof v);
-    ct_input_params ip = {0, 0, CT_FORMAT_I420};
-    ct_input *in = NULL;
-    ct_input_info info;
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_input *in = NULL;
+    video_info info;
     char err[512];
-    if (ct_input_open(path, &ip, &in, &info, err, sizeof err) < 0) {
+    if (video_open(path, &ip, &in, &info, err, sizeof err) < 0) {
         fprintf(stderr, "ct-bench: %s\n", err);
         exit(1);
     }
     v.width = info.width;
     v.height = info.height;
     v.format = CT_FORMAT_I420;
-    v.bytes = ct_frame_bytes(CT_FORMAT_I420, v.width, v.height);
+    v.bytes = frame_bytes(CT_FORMAT_I420, v.width, v.height);
     v.data = malloc(v.bytes * max_frames);
     ct_frame f;
-    while (v.frames < max_frames && ct_input_read(in, &f, err, sizeof err) == 1) {
+    while (v.frames < max_frames && video_read(in, &f, err, sizeof err) == 1) {
         if (f.format != CT_FORMAT_I420) {
             fprintf(stderr, "ct-bench: %s is not 4:2:0 colour\n", path);
             exit(1);
@@ -140,7 +140,7 @@ static video load_video(const char *path, int max_frames)
         memcpy(v.data + v.bytes * v.frames, f.planes[0], v.bytes);
         v.frames++;
     }
-    ct_input_close(in);
+    video_close(in);
     return v;
 }
 
@@ -165,7 +165,7 @@ static video to_bgr24(const video *v)
         f.planes[2] = f.planes[1] + chroma;
         f.strides[0] = v->width;
         f.strides[1] = f.strides[2] = (v->width + 1) / 2;
-        ct_i420_to_bgr24(&f, b.data + b.bytes * k);
+        i420_to_bgr24(&f, b.data + b.bytes * k);
     }
     return b;
 }
@@ -324,8 +324,8 @@ int main(int argc, char **argv)
     }
     char path[1024], err[512];
     snprintf(path, sizeof path, "%s/PETS09-S2L1/det/det.txt", data);
-    ct_detfile df;
-    if (ct_detfile_load(path, &df, err, sizeof err) < 0) {
+    det_file df;
+    if (detfile_load(path, &df, err, sizeof err) < 0) {
         fprintf(stderr, "ct-bench: %s\n", err);
         return 1;
     }
@@ -372,7 +372,7 @@ int main(int argc, char **argv)
         print_result(json, name, &r, crowd[i], 0);
         free_sequence(&syn);
     }
-    long rss = ct_peak_rss_kib();
+    long rss = peak_rss_kib();
     printf("\npeak RSS of ct-bench: %ld KiB\n", rss);
     if (json) {
         fprintf(json, "\n], \"peak_rss_kib\": %ld}\n", rss);
@@ -380,6 +380,6 @@ int main(int argc, char **argv)
     }
     free_sequence(&pets);
     free_sequence(&pets_hd);
-    ct_detfile_free(&df);
+    detfile_free(&df);
     return 0;
 }

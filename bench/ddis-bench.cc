@@ -14,7 +14,7 @@
 
 #include "alloc_count.h"
 #include "appearance.h"
-#include "input.h"
+#include "video.h"
 
 using namespace ctrack;
 using clk = std::chrono::steady_clock;
@@ -52,17 +52,17 @@ int main(int argc, char **argv)
                         name, &frame, b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7, b + 8, b + 9,
                         b + 10, b + 11, b + 12, b + 13, b + 14, b + 15) != 18)
             continue;
-        ct_input_params ip = {0, 0, CT_FORMAT_I420};
-        ct_input *in = nullptr;
-        ct_input_info info;
+        video_params ip = {0, 0, CT_FORMAT_I420};
+        video_input *in = nullptr;
+        video_info info;
         char err[256];
-        if (ct_input_open((dir + name + ".y4m").c_str(), &ip, &in, &info, err, sizeof err) < 0) {
+        if (video_open((dir + name + ".y4m").c_str(), &ip, &in, &info, err, sizeof err) < 0) {
             std::fprintf(stderr, "ddis-bench: %s\n", err);
             return 1;
         }
         for (int k = 0; k < 2; k++) {
             ct_frame fr;
-            if (ct_input_read(in, &fr, err, sizeof err) != 1)
+            if (video_read(in, &fr, err, sizeof err) != 1)
                 return 1;
             Planes p;
             p.width = fr.width;
@@ -81,7 +81,7 @@ int main(int argc, char **argv)
                 heights += x[3];
             }
         }
-        ct_input_close(in);
+        video_close(in);
     }
     std::fclose(f);
     const size_t n = desc.size();

@@ -589,7 +589,7 @@ END_TEST
 
 namespace {
 
-// One blob of tests/data/blobs/labelled.bin (tools/recognition.py): the
+// One blob of tests/data/blobs/labelled.bin (eval/recognition.py): the
 // masks the background model gave on held-out frames, labelled by rule
 // against the ground truth.
 struct RealBlob {

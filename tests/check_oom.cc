@@ -13,7 +13,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
-#include "input.h"
+#include "video.h"
 
 static const char *data_dir;
 static const char *tud_video; // TUD-Campus as Y4M (made by the build)
@@ -68,11 +68,11 @@ template <typename T> static void assert_equal(const std::vector<T> &a, const st
 }
 
 // Loads the public detections of a sequence of tests/data/mot15.
-static void load_detections(const char *seq, ct_detfile *df)
+static void load_detections(const char *seq, det_file *df)
 {
     char path[1024], err[512];
     std::snprintf(path, sizeof path, "%s/%s/det/det.txt", data_dir, seq);
-    ck_assert_msg(ct_detfile_load(path, df, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(detfile_load(path, df, err, sizeof err) == 0, "%s", err);
 }
 
 START_TEST(create_out_of_memory)
@@ -92,7 +92,7 @@ END_TEST
 // change nothing; the retry then must give what an undisturbed tracker gives.
 START_TEST(feed_out_of_memory_changes_nothing)
 {
-    ct_detfile df;
+    det_file df;
     load_detections("PETS09-S2L1", &df);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
@@ -105,7 +105,7 @@ START_TEST(feed_out_of_memory_changes_nothing)
         ct_frame_default(&f, sizeof f);
         f.timestamp_us = (int64_t)((k - 1) * 1e6 / 7);
         size_t n;
-        const ct_detection *d = ct_detfile_frame(&df, k, &n);
+        const ct_detection *d = detfile_frame(&df, k, &n);
         ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
 
         std::vector<ct_track> before = tracks_of(t);
@@ -125,7 +125,7 @@ START_TEST(feed_out_of_memory_changes_nothing)
     ck_assert_int_gt(refused, 0);
     ct_tracker_destroy(ref);
     ct_tracker_destroy(t);
-    ct_detfile_free(&df);
+    detfile_free(&df);
 }
 END_TEST
 
@@ -141,7 +141,7 @@ END_TEST
 static ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
 {
     bgr->resize((size_t)3 * f.width * f.height);
-    ct_i420_to_bgr24(&f, bgr->data());
+    i420_to_bgr24(&f, bgr->data());
     ct_frame out = f;
     out.format = CT_FORMAT_BGR24;
     out.planes[0] = bgr->data();
@@ -154,13 +154,13 @@ static ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
 static void pixels_out_of_memory(int source, bool packed = false)
 {
     std::vector<uint8_t> bgr;
-    ct_detfile df;
+    det_file df;
     load_detections("TUD-Campus", &df);
     char err[512];
-    ct_input_params ip = {0, 0, CT_FORMAT_I420};
-    ct_input *in = nullptr;
-    ct_input_info info;
-    ck_assert_msg(ct_input_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_input *in = nullptr;
+    video_info info;
+    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
     cfg.source = source;
@@ -170,7 +170,7 @@ static void pixels_out_of_memory(int source, bool packed = false)
     int refused = 0, frames = 0;
     for (int k = 1;; k++) {
         ct_frame f;
-        const int r = ct_input_read(in, &f, err, sizeof err);
+        const int r = video_read(in, &f, err, sizeof err);
         ck_assert_msg(r >= 0, "%s", err);
         if (r == 0)
             break;
@@ -179,7 +179,7 @@ static void pixels_out_of_memory(int source, bool packed = false)
         frames++;
         f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
         size_t n = 0;
-        const ct_detection *d = ct_detfile_frame(&df, k, &n);
+        const ct_detection *d = detfile_frame(&df, k, &n);
         if (source == CT_SOURCE_PIXELS)
             d = nullptr, n = 0;
         ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
@@ -212,8 +212,8 @@ static void pixels_out_of_memory(int source, bool packed = false)
     ck_assert_int_gt(refused, frames);
     ct_tracker_destroy(ref);
     ct_tracker_destroy(t);
-    ct_input_close(in);
-    ct_detfile_free(&df);
+    video_close(in);
+    detfile_free(&df);
 }
 
 START_TEST(pixels_only_out_of_memory_changes_nothing)
@@ -238,7 +238,7 @@ END_TEST
 // In steady state, a feed makes no heap allocation at all.
 START_TEST(steady_state_does_not_allocate)
 {
-    ct_detfile df;
+    det_file df;
     load_detections("PETS09-S2L1", &df);
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
@@ -255,7 +255,7 @@ START_TEST(steady_state_does_not_allocate)
             ct_frame_default(&f, sizeof f);
             f.timestamp_us = (int64_t)((pass * df.max_frame + k - 1) * 1e6 / 7);
             size_t n, count;
-            const ct_detection *d = ct_detfile_frame(&df, k, &n);
+            const ct_detection *d = detfile_frame(&df, k, &n);
             long a0 = allocations;
             ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
             ck_assert_int_eq(ct_tracker_get_tracks(t, out, 512, sizeof out[0], &count), CT_OK);
@@ -265,7 +265,7 @@ START_TEST(steady_state_does_not_allocate)
     }
     ck_assert_int_eq(in_last_half, 0);
     ct_tracker_destroy(t);
-    ct_detfile_free(&df);
+    detfile_free(&df);
 }
 END_TEST
 

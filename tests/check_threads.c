@@ -32,9 +32,9 @@ static void *replay(void *arg)
     run *r = arg;
     char path[1024], err[512];
     snprintf(path, sizeof path, "%s/%s/det/det.txt", data_dir, r->seq);
-    ct_detfile df;
+    det_file df;
     r->status = -1;
-    if (ct_detfile_load(path, &df, err, sizeof err) < 0) {
+    if (detfile_load(path, &df, err, sizeof err) < 0) {
         fprintf(stderr, "%s\n", err);
         return NULL;
     }
@@ -51,7 +51,7 @@ static void *replay(void *arg)
         f.height = r->height;
         f.timestamp_us = (int64_t)((k - 1) * 1e6 / r->fps);
         size_t n, count;
-        const ct_detection *d = ct_detfile_frame(&df, k, &n);
+        const ct_detection *d = detfile_frame(&df, k, &n);
         if (ct_tracker_feed(t, &f, d, n) != CT_OK ||
             ct_tracker_get_tracks(t, tracks, 256, sizeof tracks[0], &count) != CT_OK)
             goto out;
@@ -60,7 +60,7 @@ static void *replay(void *arg)
     r->status = 0;
 out:
     ct_tracker_destroy(t);
-    ct_detfile_free(&df);
+    detfile_free(&df);
     return NULL;
 }
 

@@ -39,7 +39,7 @@ init=$(find "$root" -path '*/ctrack/__init__.py' | head -n 1)
 [ -n "$init" ] || { echo "install: no Python package installed"; exit 1; }
 site=$(dirname "$(dirname "$init")")
 "$root/bin/ct-track" -q -d "$det" -r 25 > "$tmp/ct.txt"
-py=$("$src/tools/venv.sh")
+py=$("$src/scripts/venv.sh")
 cat > "$tmp/track.py" <<'END'
 import sys
 import numpy as np

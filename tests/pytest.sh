@@ -3,7 +3,7 @@
 #   pytest.sh LIBCTRACK_SO CT_TRACK ABI_LAYOUT
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
-py=$("$here/../tools/venv.sh")
+py=$("$here/../scripts/venv.sh")
 export CTRACK_LIBRARY="$(realpath "$1")" CTRACK_CT_TRACK="$(realpath "$2")" CTRACK_ABI_LAYOUT="$(realpath "$3")"
 cd "$here/python"
 # make sanitize: the sanitizers' runtimes, loaded ahead of Python, which was

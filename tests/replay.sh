@@ -9,7 +9,7 @@ set -eu
 ct_track=$1
 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
-py=$("$here/../tools/venv.sh")
+py=$("$here/../scripts/venv.sh")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
@@ -28,7 +28,7 @@ check() { # NAME SEQ MIN_MOTA MIN_IDF1 CT_TRACK_ARGS... (DETS in them: the publi
     done
     "$ct_track" -q -o "$tmp/$seq.txt" "$@"
     printf '%s: ' "$name"
-    "$py" "$here/../tools/mot_score.py" "$data/$seq/gt/gt.txt" "$tmp/$seq.txt" \
+    "$py" -m cteval.score "$data/$seq/gt/gt.txt" "$tmp/$seq.txt" \
         --min-mota "$mota" --min-idf1 "$idf1" || fail=1
 }
 check "PETS09-S2L1, detections" PETS09-S2L1 66.5 64.5 DETS -s 768x576 -r 7
@@ -38,7 +38,7 @@ check "TUD-Campus, detections" TUD-Campus 68.5 80.0 DETS -s 640x480 -r 25
 # (once, cached) from Debian's opencv-doc package.
 ffmpeg -v error -i "$data/TUD-Campus/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/tud.y4m"
 check "TUD-Campus, detections + pixels" TUD-Campus 68.0 76.5 DETS "$tmp/tud.y4m"
-pets=$("$here/../tools/fetch-pets09.sh")
+pets=$("$here/../scripts/fetch-pets09.sh")
 check "PETS09-S2L1, detections + pixels" PETS09-S2L1 68.5 74.5 DETS "$pets"
 check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 68.0 73.0 \
     DETS -p verify_detections=1 "$pets"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "input.h"
+#include "video.h"
 #include "planes.h"
 
 struct Image {
@@ -40,20 +40,20 @@ struct Image {
 // Reads the first n frames of a 4:2:0 Y4M file.
 inline void read_clip(const std::string &path, Image *frames, int n)
 {
-    ct_input_params ip = {0, 0, CT_FORMAT_I420};
-    ct_input *in = nullptr;
-    ct_input_info info;
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_input *in = nullptr;
+    video_info info;
     char err[256];
-    ck_assert_msg(ct_input_open(path.c_str(), &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(video_open(path.c_str(), &ip, &in, &info, err, sizeof err) == 0, "%s", err);
     for (int k = 0; k < n; k++) {
         ct_frame fr;
-        ck_assert_int_eq(ct_input_read(in, &fr, err, sizeof err), 1);
+        ck_assert_int_eq(video_read(in, &fr, err, sizeof err), 1);
         frames[k].w = fr.width;
         frames[k].h = fr.height;
         frames[k].buf.assign(fr.planes[0],
-                             fr.planes[0] + ct_frame_bytes(CT_FORMAT_I420, fr.width, fr.height));
+                             fr.planes[0] + frame_bytes(CT_FORMAT_I420, fr.width, fr.height));
     }
-    ct_input_close(in);
+    video_close(in);
 }
 
 #endif

@@ -51,7 +51,7 @@ same "standard output equals -o" "$tmp/out" "$tmp/detonly.txt"
 
 # Real frames through ffmpeg: a Y4M file, standard input, raw I420, NV12, grey.
 if ! command -v ffmpeg > /dev/null; then
-    bad "ffmpeg" "not installed (tools/install-deps.sh installs it)"
+    bad "ffmpeg" "not installed (scripts/install-deps.sh installs it)"
 else
     ffmpeg -v error -i "$tud/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/tud.y4m"
     ffmpeg -v error -i "$tud/video.mp4" -f rawvideo -pix_fmt yuv420p "$tmp/tud.i420"

@@ -33,7 +33,7 @@ With --write it rewrites lib/region_thresholds.inc with those thresholds,
 and tests/data/blobs/labelled.bin: the masks of held-out blobs (every
 negative of PETS09-S2L1 frames 401-795 and of TUD-Campus, and as many
 positives drawn at random with a fixed seed) for the contour template's unit
-test, taken by tools/dump-blobs from the same run. With --report it rewrites
+test, taken by eval/dump-blobs from the same run. With --report it rewrites
 docs/recognition.md. The blobs depend on the thresholds (through tracking and
 the merging of fragments), so after --write: make, then --report.
 """
@@ -46,12 +46,7 @@ import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-from eval import seqinfo, video  # noqa: E402
-
-DATA = os.path.join(TOP, "tests", "data", "mot15")
+from cteval.data import DATA, TOP, ct_track, seqinfo, video
 REGIONS = ["head", "neck", "shoulders", "chest", "back", "abdomen", "buttocks",
            "upper limbs", "lower limbs"]
 
@@ -69,17 +64,17 @@ def iou(a, b):
 def candidates(build, seq):
     fps = "%g" % seqinfo(seq)["fps"]
     path = os.path.join(build, "recognition-%s.txt" % seq)
-    subprocess.run([os.path.join(build, "tools", "ct-track"), "-q", "-r", fps, "-o", os.devnull,
+    subprocess.run([ct_track(build), "-q", "-r", fps, "-o", os.devnull,
                     "--candidates", path, video(seq)], check=True)
     return np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
 
 
 def blob_masks(build, seq, cands):
-    """The masks of the candidates (tools/dump-blobs runs the same tracker
+    """The masks of the candidates (eval/dump-blobs runs the same tracker
     and must find the same blobs): (frame, x0, y0, w, h, mask) in working
     pixels, one per candidate row."""
     path = os.path.join(build, "recognition-%s.blobs" % seq)
-    subprocess.run([os.path.join(build, "tools", "dump-blobs"), video(seq), path], check=True)
+    subprocess.run([os.path.join(build, "eval", "dump-blobs"), video(seq), path], check=True)
     data = open(path, "rb").read()
     out, i = [], 0
     while i < len(data):
@@ -434,7 +429,7 @@ def main():
         with open(os.path.join(TOP, "lib", "region_thresholds.inc"), "w") as f:
             f.write("// The thresholds of eq. (1)'s regions (box heights), in region order: head,\n"
                     "// neck, shoulders, chest, back, abdomen, buttocks, upper limbs, lower\n"
-                    "// limbs. Chosen by tools/recognition.py on PETS09-S2L1 frames 1-400\n"
+                    "// limbs. Chosen by eval/recognition.py on PETS09-S2L1 frames 1-400\n"
                     "// (docs/recognition.md), which rewrites this file.\n"
                     "// The last value is the largest part of its convex hull that a\n"
                     "// pedestrian's blob fills.\n"
@@ -517,7 +512,7 @@ def main():
 
 RECOGNITION_HEAD = """# Feature recognition: the contour template's region vote
 
-Made by `tools/recognition.py build --report` on %s, with the thresholds
+Made by `eval/recognition.py build --report` on %s, with the thresholds
 the library is built with (`--write` chooses them again and rewrites
 `lib/region_thresholds.inc`; run `make` after it). The blobs are those
 the background model finds when ct-track tracks from the pixels alone; each is

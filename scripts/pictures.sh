@@ -7,7 +7,7 @@
 set -eu
 build=${1:-build}
 top=$(cd "$(dirname "$0")/.." && pwd)
-pets=$("$top/tools/fetch-pets09.sh")
+pets=$("$top/scripts/fetch-pets09.sh")
 out=$top/docs/img
 mkdir -p "$out"
 tmp=$(mktemp -d)

@@ -5,111 +5,22 @@ docs/img/scores.png and docs/img/rates.png.
 
     eval.py BUILD_DIR [--out DOCS_DIR]
 
-Needs the eval venv (tools/venv.sh eval), ffmpeg, and the PETS09-S2L1 frames
-(tools/fetch-pets09.sh, cached).
+Needs the eval venv (scripts/venv.sh eval), ffmpeg, and the PETS09-S2L1 frames
+(scripts/fetch-pets09.sh, cached).
 """
 import argparse
-import configparser
 import datetime
 import json
 import os
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-import peers  # noqa: E402
-from y4m import open_y4m  # noqa: E402
-from mot_score import score  # noqa: E402
-
-DATA = os.path.join(TOP, "tests", "data", "mot15")
-
-
-def seqinfo(seq):
-    c = configparser.ConfigParser()
-    c.read(os.path.join(DATA, seq, "seqinfo.ini"))
-    s = c["Sequence"]
-    return {"frames": int(s["seqLength"]), "fps": float(s["frameRate"]),
-            "width": int(s["imWidth"]), "height": int(s["imHeight"])}
-
-
-def cache_dir():
-    """Where decoded videos are kept: $CT_CACHE, as tools/fetch-pets09.sh."""
-    d = os.environ.get("CT_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
-    os.makedirs(d, exist_ok=True)
-    return d
-
-
-def video(seq):
-    """A cached Y4M of the sequence's frames."""
-    if seq == "PETS09-S2L1":
-        return subprocess.run([os.path.join(HERE, "fetch-pets09.sh")], check=True,
-                              capture_output=True, text=True).stdout.strip()
-    out = os.path.join(cache_dir(), seq.lower() + ".y4m")
-    if not os.path.exists(out):
-        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i",
-                        os.path.join(DATA, seq, "video.mp4"), "-f", "yuv4mpegpipe",
-                        "-pix_fmt", "yuv420p", out + ".part"], check=True)
-        os.replace(out + ".part", out)
-    return out
-
-
-def load_dets(seq, path=None):
-    d = np.loadtxt(path or os.path.join(DATA, seq, "det", "det.txt"), delimiter=",", ndmin=2)
-    return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
-
-
-def subsampled(seq, info, y4m, k, offset, tmp, data=DATA):
-    """The sequence at 1/k of its frame rate: frames offset+1, offset+1+k,
-    ... kept and numbered again from 1. Writes a Y4M of the video y4m (none
-    when y4m is None) and the ground truth and detections of those frames
-    into tmp; returns (y4m or None, gt, det, info)."""
-    tag = "%s-%dof%d" % (seq, offset + 1, k)
-    out = None
-    if y4m is not None:
-        w, h, (num, den), frames = open_y4m(y4m)
-        out = os.path.join(tmp, tag + ".y4m")
-        with open(out, "wb") as f:
-            f.write(b"YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg\n" % (w, h, num, den * k))
-            for row in frames[offset::k]:
-                f.write(b"FRAME\n")
-                f.write(row.tobytes())
-    paths = []
-    for kind in ("gt", "det"):
-        a = np.loadtxt(os.path.join(data, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
-        a = a[(a[:, 0] - 1 - offset) % k == 0]
-        a[:, 0] = (a[:, 0] - 1 - offset) // k + 1
-        paths.append(os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
-        np.savetxt(paths[-1], a, delimiter=",", fmt="%.6g")
-    sub = dict(info, fps=info["fps"] / k, frames=len(range(offset, info["frames"], k)))
-    return out, paths[0], paths[1], sub
-
-
-def write_rows(path, rows):
-    with open(path, "w") as f:
-        for k, tid, x, y, w, h in rows:
-            f.write("%d,%d,%.2f,%.2f,%.2f,%.2f,1,-1,-1,-1\n" % (k, tid, x, y, w, h))
-
-
-def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True, det=None):
-    cmd = [os.path.join(build, "tools", "ct-track"), "-q", "-o", out]
-    if detections:
-        cmd += ["-d", det or os.path.join(DATA, seq, "det", "det.txt")]
-    for p in params:
-        cmd += ["-p", p]
-    if pixels:
-        cmd += ["-r", str(info["fps"]), y4m]
-    else:
-        cmd += ["-s", "%dx%d" % (info["width"], info["height"]), "-r", str(info["fps"])]
-    t0 = time.perf_counter()
-    subprocess.run(cmd, check=True)
-    return time.perf_counter() - t0
+from cteval import peers
+from cteval.data import (DATA, TOP, cache_dir, ctrack_version, load_dets, run_ctrack, seqinfo,
+                         subsampled, video, write_rows)
+from cteval.score import score
 
 
 def trackeval_scores(seqs, trackers_dir, names):
@@ -351,7 +262,7 @@ def write_report(out, results, seqs, worst, lower):
 
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("# Results\n\n")
-        f.write("Made by `make eval` (`tools/eval.py`) on %s, ctrack %s. Every tracker "
+        f.write("Made by `make eval` (`eval/eval.py`) on %s, ctrack %s. Every tracker "
                 "runs online on the same input; one set of defaults serves both "
                 "sequences. HOTA from TrackEval 1.3.0; MOTA, IDF1, ID switches, "
                 "precision, recall and the barycenter error from py-motmetrics 1.4.0 "
@@ -436,21 +347,13 @@ NOTES = """## Notes
   detection's box, and between detections is reported where the tracker
   follows the person, while the tracker says it holds them. Their time
   includes OpenCV's trackers, not the conversion of the frames to BGR.
-  `tools/peers.py` has them.
+  `eval/cteval/peers.py` has them.
 - **Barycenter error** (the paper's measure, ALGORITHM.md): over the matched pairs,
   the distance between the track's and the ground truth's box centres divided by the
   ground-truth box height.
 - **Feature recognition accuracy** (the paper's third measure) is in
-  docs/recognition.md (`tools/recognition.py`).
+  docs/recognition.md (`eval/recognition.py`).
 """
-
-
-def ctrack_version():
-    h = open(os.path.join(TOP, "include", "ctrack", "ctrack.h")).read()
-    import re
-    parts = [re.search(r"#define CT_VERSION_%s (\d+)" % p, h).group(1)
-             for p in ("MAJOR", "MINOR", "PATCH")]
-    return ".".join(parts)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 data=$top/tests/data/mot15
 out=$build/demo
 mkdir -p "$out"
-py=$("$top/tools/venv.sh")
+py=$("$top/scripts/venv.sh")
 ct=$build/tools/ct-track
 encoder="-c:v mpeg4 -q:v 5"
 if ffmpeg -hide_banner -encoders 2>/dev/null | grep -q libx264; then
@@ -40,19 +40,19 @@ track() {
     rm -f "$fifo"
 }
 
-pets=$("$top/tools/fetch-pets09.sh")
+pets=$("$top/scripts/fetch-pets09.sh")
 echo "PETS09-S2L1: $pets with the public detections"
 track "$out/PETS09-S2L1.mp4" -d "$data/PETS09-S2L1/det/det.txt" -o "$out/PETS09-S2L1.txt" "$pets"
-"$py" "$top/tools/mot_score.py" "$data/PETS09-S2L1/gt/gt.txt" "$out/PETS09-S2L1.txt"
+"$py" -m cteval.score "$data/PETS09-S2L1/gt/gt.txt" "$out/PETS09-S2L1.txt"
 
 echo "PETS09-S2L1 from the pixels alone (no detections)"
 track "$out/PETS09-S2L1-pixels.mp4" -r 7 -o "$out/PETS09-S2L1-pixels.txt" "$pets"
-"$py" "$top/tools/mot_score.py" "$data/PETS09-S2L1/gt/gt.txt" "$out/PETS09-S2L1-pixels.txt"
+"$py" -m cteval.score "$data/PETS09-S2L1/gt/gt.txt" "$out/PETS09-S2L1-pixels.txt"
 
 echo "TUD-Campus: video.mp4 through ffmpeg with the public detections"
 tud=$out/.tud-campus.y4m
 ffmpeg -v error -y -i "$data/TUD-Campus/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p "$tud"
 track "$out/TUD-Campus.mp4" -d "$data/TUD-Campus/det/det.txt" -o "$out/TUD-Campus.txt" "$tud"
 rm -f "$tud"
-"$py" "$top/tools/mot_score.py" "$data/TUD-Campus/gt/gt.txt" "$out/TUD-Campus.txt"
+"$py" -m cteval.score "$data/TUD-Campus/gt/gt.txt" "$out/TUD-Campus.txt"
 echo "tracks and videos with the tracks drawn written to $out/"

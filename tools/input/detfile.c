@@ -49,7 +49,7 @@ static int parse_fields(char *line, double *v, int max)
     }
 }
 
-int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len)
+int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
 {
     memset(out, 0, sizeof *out);
     FILE *f = fopen(path, "r");
@@ -126,7 +126,7 @@ int ct_detfile_load(const char *path, ct_detfile *out, char *err, size_t err_len
     out->frames = malloc((count ? count : 1) * sizeof *out->frames);
     if (!out->dets || !out->frames) {
         snprintf(err, err_len, "out of memory reading '%s'", path);
-        ct_detfile_free(out);
+        detfile_free(out);
         goto out;
     }
     for (size_t i = 0; i < count; i++) {
@@ -143,7 +143,7 @@ out:
     return rc;
 }
 
-const ct_detection *ct_detfile_frame(ct_detfile *df, int frame, size_t *n)
+const ct_detection *detfile_frame(det_file *df, int frame, size_t *n)
 {
     while (df->cursor < df->count && df->frames[df->cursor] < frame)
         df->cursor++;
@@ -154,7 +154,7 @@ const ct_detection *ct_detfile_frame(ct_detfile *df, int frame, size_t *n)
     return *n ? df->dets + start : NULL;
 }
 
-void ct_detfile_free(ct_detfile *df)
+void detfile_free(det_file *df)
 {
     free(df->dets);
     free(df->frames);

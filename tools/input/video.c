@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "input.h"
+#include "video.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -11,7 +11,7 @@
 #define Y4M_MAX_LINE 1024
 #define MAX_SIDE 16384
 
-struct ct_input {
+struct video_input {
     FILE *f;
     int owns_file;
     int y4m;
@@ -25,7 +25,7 @@ struct ct_input {
     long long frame_index;
 };
 
-size_t ct_frame_bytes(uint32_t format, int width, int height)
+size_t frame_bytes(uint32_t format, int width, int height)
 {
     if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE)
         return 0;
@@ -40,7 +40,7 @@ size_t ct_frame_bytes(uint32_t format, int width, int height)
 }
 
 /* Reads up to n bytes, first from the replay buffer; returns bytes read. */
-static size_t read_bytes(ct_input *in, void *dst, size_t n)
+static size_t read_bytes(video_input *in, void *dst, size_t n)
 {
     size_t got = 0;
     unsigned char *d = dst;
@@ -53,7 +53,7 @@ static size_t read_bytes(ct_input *in, void *dst, size_t n)
 
 /* Reads one line (without '\n') of at most max bytes. Returns its length, -1
  * at end of file before any byte, -2 when too long or cut by end of file. */
-static long read_line(ct_input *in, char *line, size_t max)
+static long read_line(video_input *in, char *line, size_t max)
 {
     size_t n = 0;
     for (;;) {
@@ -70,7 +70,7 @@ static long read_line(ct_input *in, char *line, size_t max)
     return (long)n;
 }
 
-static int parse_y4m_header(ct_input *in, ct_input_info *info, char *err, size_t err_len)
+static int parse_y4m_header(video_input *in, video_info *info, char *err, size_t err_len)
 {
     char line[Y4M_MAX_LINE];
     long len = read_line(in, line, sizeof line);
@@ -136,12 +136,12 @@ static int parse_y4m_header(ct_input *in, ct_input_info *info, char *err, size_t
     return 0;
 }
 
-int ct_input_open(const char *path, const ct_input_params *params, ct_input **out,
-                  ct_input_info *info, char *err, size_t err_len)
+int video_open(const char *path, const video_params *params, video_input **out,
+                  video_info *info, char *err, size_t err_len)
 {
     *out = NULL;
     memset(info, 0, sizeof *info);
-    ct_input *in = calloc(1, sizeof *in);
+    video_input *in = calloc(1, sizeof *in);
     if (!in) {
         snprintf(err, err_len, "out of memory");
         return -1;
@@ -160,7 +160,7 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
         struct stat st;
         if (fstat(fileno(in->f), &st) == 0 && S_ISDIR(st.st_mode)) {
             snprintf(err, err_len, "cannot read '%s': it is a directory", path);
-            ct_input_close(in);
+            video_close(in);
             return -1;
         }
     }
@@ -168,7 +168,7 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
     in->pending_len = fread(in->pending, 1, strlen(Y4M_SIGNATURE), in->f);
     if (ferror(in->f)) {
         snprintf(err, err_len, "cannot read '%s': %s", path, strerror(errno));
-        ct_input_close(in);
+        video_close(in);
         return -1;
     }
     in->y4m = in->pending_len == strlen(Y4M_SIGNATURE) &&
@@ -177,14 +177,14 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
         /* Keep the space so the tokenizer sees " W640 ..." after it. */
         in->pending_pos = 0;
         if (parse_y4m_header(in, info, err, err_len) < 0) {
-            ct_input_close(in);
+            video_close(in);
             return -1;
         }
     } else {
         if (params->width <= 0 || params->height <= 0) {
             snprintf(err, err_len,
                      "'%s' is not Y4M: give the raw video's size with --size WxH", path);
-            ct_input_close(in);
+            video_close(in);
             return -1;
         }
         in->width = params->width;
@@ -192,11 +192,11 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
         in->format = params->format;
         info->frames = -1;
     }
-    in->frame_bytes = ct_frame_bytes(in->format, in->width, in->height);
+    in->frame_bytes = frame_bytes(in->format, in->width, in->height);
     if (in->frame_bytes == 0) {
         snprintf(err, err_len, "size %dx%d is absurd (each side must be in [1, %d])",
                  in->width, in->height, MAX_SIDE);
-        ct_input_close(in);
+        video_close(in);
         return -1;
     }
     if (!in->y4m && !is_stdin) {
@@ -208,7 +208,7 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
                          "'%s' has %lld bytes, not a whole number of %dx%d frames of %zu "
                          "bytes: check --size and --format",
                          path, total, in->width, in->height, in->frame_bytes);
-                ct_input_close(in);
+                video_close(in);
                 return -1;
             }
             info->frames = total / (long long)in->frame_bytes;
@@ -217,7 +217,7 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
     in->buf = malloc(in->frame_bytes);
     if (!in->buf) {
         snprintf(err, err_len, "out of memory for a %dx%d frame", in->width, in->height);
-        ct_input_close(in);
+        video_close(in);
         return -1;
     }
     info->width = in->width;
@@ -227,7 +227,7 @@ int ct_input_open(const char *path, const ct_input_params *params, ct_input **ou
     return 0;
 }
 
-int ct_input_read(ct_input *in, ct_frame *frame, char *err, size_t err_len)
+int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len)
 {
     if (in->y4m) {
         char line[Y4M_MAX_LINE];
@@ -273,7 +273,7 @@ int ct_input_read(ct_input *in, ct_frame *frame, char *err, size_t err_len)
     return 1;
 }
 
-void ct_input_close(ct_input *in)
+void video_close(video_input *in)
 {
     if (!in)
         return;
@@ -288,7 +288,7 @@ static uint8_t clamp_byte(int v)
     return (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
 }
 
-void ct_i420_to_bgr24(const ct_frame *f, uint8_t *out)
+void i420_to_bgr24(const ct_frame *f, uint8_t *out)
 {
     for (int y = 0; y < f->height; y++)
         for (int x = 0; x < f->width; x++) {

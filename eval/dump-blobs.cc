@@ -1,5 +1,5 @@
 // Writes the masks of the blobs the pixels-only tracker finds, for
-// tools/recognition.py: the labelled set of ALGORITHM.md ("Measures") and
+// eval/recognition.py: the labelled set of ALGORITHM.md ("Measures") and
 // the real blobs of the contour template's unit test. Internal: it links the
 // engine itself, to reach its foreground mask. Not installed.
 //
@@ -12,7 +12,7 @@
 #include <cstring>
 #include <vector>
 
-#include "input.h"
+#include "video.h"
 #include "tracker.h"
 
 int main(int argc, char **argv)
@@ -22,17 +22,17 @@ int main(int argc, char **argv)
         return 2;
     }
     char err[256];
-    ct_input *in = nullptr;
-    ct_input_info info;
-    ct_input_params params = {};
-    if (ct_input_open(argv[1], &params, &in, &info, err, sizeof err) != 0) {
+    video_input *in = nullptr;
+    video_info info;
+    video_params params = {};
+    if (video_open(argv[1], &params, &in, &info, err, sizeof err) != 0) {
         std::fprintf(stderr, "dump-blobs: %s\n", err);
         return 1;
     }
     FILE *out = std::fopen(argv[2], "wb");
     if (!out) {
         std::perror(argv[2]);
-        ct_input_close(in);
+        video_close(in);
         return 1;
     }
     ct_config cfg;
@@ -45,7 +45,7 @@ int main(int argc, char **argv)
     std::vector<uint8_t> crop;
     int status = 0;
     for (int32_t k = 1;; k++) {
-        const int r = ct_input_read(in, &f, err, sizeof err);
+        const int r = video_read(in, &f, err, sizeof err);
         if (r == 0)
             break;
         if (r < 0) {
@@ -70,7 +70,7 @@ int main(int argc, char **argv)
             std::fwrite(crop.data(), 1, crop.size(), out);
         }
     }
-    ct_input_close(in);
+    video_close(in);
     if (std::fclose(out) != 0) {
         std::perror(argv[2]);
         status = 1;

@@ -2,7 +2,7 @@
 """Cuts small real test clips from PETS09-S2L1 for the unit tests, chosen
 from the ground truth by rule (never by hand), into tests/data/pets09-crops/.
 
-    make-test-crops.py            (needs tools/fetch-pets09.sh's cached frames)
+    make-test-crops.py            (needs scripts/fetch-pets09.sh's cached frames)
 
 Mean shift clips ("walk-*"): one person with no other ground-truth box near,
 at least 70 pixels tall and 40 pixels inside the image, in frame f and f+2;

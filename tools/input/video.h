@@ -1,7 +1,7 @@
 /* Reading video for ct-track: raw I420 / NV12 / GRAY8 files, Y4M files, and
  * either from standard input ("-"). */
-#ifndef CT_TOOLS_INPUT_H
-#define CT_TOOLS_INPUT_H
+#ifndef CT_TOOLS_VIDEO_H
+#define CT_TOOLS_VIDEO_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -12,42 +12,42 @@
 extern "C" {
 #endif
 
-typedef struct ct_input ct_input;
+typedef struct video_input video_input;
 
-typedef struct ct_input_params {
+typedef struct video_params {
     /* Raw input only: the size and format (CT_FORMAT_*). Y4M carries its own
      * and these are ignored. */
     int width, height;
     uint32_t format;
-} ct_input_params;
+} video_params;
 
-typedef struct ct_input_info {
+typedef struct video_info {
     int width, height;
     uint32_t format;
     /* Frame rate from the Y4M header (0/0 for raw input). */
     int rate_num, rate_den;
     /* Frames in the file when known from its size (raw regular files), else -1. */
     long long frames;
-} ct_input_info;
+} video_info;
 
 /* Opens `path` ("-" for standard input). Recognises Y4M by its signature.
  * Returns 0, or -1 with a message in err. */
-int ct_input_open(const char *path, const ct_input_params *params, ct_input **out,
-                  ct_input_info *info, char *err, size_t err_len);
+int video_open(const char *path, const video_params *params, video_input **out,
+                  video_info *info, char *err, size_t err_len);
 
 /* Reads the next frame into *frame (planes point into the reader's buffer,
  * valid until the next read). Returns 1 for a frame, 0 at a clean end, -1 on
  * an error with a message in err (a truncated frame is an error). */
-int ct_input_read(ct_input *in, ct_frame *frame, char *err, size_t err_len);
+int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len);
 
-void ct_input_close(ct_input *in);
+void video_close(video_input *in);
 
 /* Bytes of one frame of the given format and size (0 for bad values). */
-size_t ct_frame_bytes(uint32_t format, int width, int height);
+size_t frame_bytes(uint32_t format, int width, int height);
 
 /* The I420 frame f as packed BGR (BT.601 back from limited range) in out,
  * 3 * width bytes a row: the packed frames of the tests and benchmarks. */
-void ct_i420_to_bgr24(const ct_frame *f, uint8_t *out);
+void i420_to_bgr24(const ct_frame *f, uint8_t *out);
 
 #ifdef __cplusplus
 }

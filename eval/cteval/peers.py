@@ -217,7 +217,7 @@ def _on_frames(y4m_path, n_frames, make_step):
     returns (id, box) pairs. Returns MOTChallenge rows and the time spent
     in step."""
     import cv2
-    from y4m import open_y4m
+    from .y4m import open_y4m
     w, h, _, frames = open_y4m(y4m_path)
     n = len(frames) if n_frames is None else min(n_frames, len(frames))
     step = make_step(w, h)

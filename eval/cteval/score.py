@@ -1,7 +1,6 @@
-#!/usr/bin/env python3
 """Scores MOTChallenge track files against ground truth with py-motmetrics.
 
-    mot_score.py GT.txt TRACKS.txt [--min-mota X] [--min-idf1 Y] [--json]
+    python -m cteval.score GT.txt TRACKS.txt [--min-mota X] [--min-idf1 Y] [--json]
 
 Prints MOTA, IDF1, ID switches, precision and recall (in percent). With
 --min-mota / --min-idf1 it exits 1 when a score is below its threshold, so a

@@ -17,7 +17,7 @@ typedef struct {
     long long last_seen;
 } trail;
 
-struct ct_overlay {
+struct overlay_writer {
     FILE *f;
     int owns;
     int w, h, cw, ch;
@@ -39,14 +39,14 @@ static const uint8_t digits[10][5] = {
     {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
 };
 
-ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int rate_den,
+overlay_writer *overlay_open(const char *path, int w, int h, int rate_num, int rate_den,
                             char *err, size_t err_len)
 {
     if (w < 1 || h < 1 || w > 16384 || h > 16384) {
         snprintf(err, err_len, "--overlay needs the image size (give --size WxH)");
         return NULL;
     }
-    ct_overlay *ov = calloc(1, sizeof *ov);
+    overlay_writer *ov = calloc(1, sizeof *ov);
     if (!ov) {
         snprintf(err, err_len, "out of memory");
         return NULL;
@@ -79,7 +79,7 @@ ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int ra
     return ov;
 }
 
-static void copy_planes(ct_overlay *ov, const ct_frame *fr)
+static void copy_planes(overlay_writer *ov, const ct_frame *fr)
 {
     const int w = ov->w, h = ov->h, cw = ov->cw, ch = ov->ch;
     if (fr->format == CT_FORMAT_NONE) {
@@ -107,7 +107,7 @@ static void copy_planes(ct_overlay *ov, const ct_frame *fr)
     }
 }
 
-static void put(ct_overlay *ov, int x, int y, const uint8_t *c)
+static void put(overlay_writer *ov, int x, int y, const uint8_t *c)
 {
     if (x < 0 || y < 0 || x >= ov->w || y >= ov->h)
         return;
@@ -116,14 +116,14 @@ static void put(ct_overlay *ov, int x, int y, const uint8_t *c)
     ov->v[(size_t)(y / 2) * ov->cw + x / 2] = c[2];
 }
 
-static void fill(ct_overlay *ov, int x0, int y0, int x1, int y1, const uint8_t *c)
+static void fill(overlay_writer *ov, int x0, int y0, int x1, int y1, const uint8_t *c)
 {
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++)
             put(ov, x, y, c);
 }
 
-static void line(ct_overlay *ov, int x0, int y0, int x1, int y1, const uint8_t *c)
+static void line(overlay_writer *ov, int x0, int y0, int x1, int y1, const uint8_t *c)
 {
     int dx = abs(x1 - x0), dy = -abs(y1 - y0);
     int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1, e = dx + dy;
@@ -140,7 +140,7 @@ static void line(ct_overlay *ov, int x0, int y0, int x1, int y1, const uint8_t *
 static const uint8_t white[3] = {235, 128, 128};
 
 /* A number in white digits of `scale` pixels on a box of colour c. */
-static void label(ct_overlay *ov, int x, int y, uint64_t id, const uint8_t *c, int scale)
+static void label(overlay_writer *ov, int x, int y, uint64_t id, const uint8_t *c, int scale)
 {
     char s[24];
     int n = snprintf(s, sizeof s, "%llu", (unsigned long long)id);
@@ -155,7 +155,7 @@ static void label(ct_overlay *ov, int x, int y, uint64_t id, const uint8_t *c, i
 }
 
 /* The outline of the box [x0, x1) x [y0, y1), th pixels thick. */
-static void frame_box(ct_overlay *ov, int x0, int y0, int x1, int y1, int th, const uint8_t *c)
+static void frame_box(overlay_writer *ov, int x0, int y0, int x1, int y1, int th, const uint8_t *c)
 {
     fill(ov, x0, y0, x1, y0 + th, c);
     fill(ov, x0, y1 - th, x1, y1, c);
@@ -163,7 +163,7 @@ static void frame_box(ct_overlay *ov, int x0, int y0, int x1, int y1, int th, co
     fill(ov, x1 - th, y0, x1, y1, c);
 }
 
-static trail *trail_of(ct_overlay *ov, uint64_t id)
+static trail *trail_of(overlay_writer *ov, uint64_t id)
 {
     trail *oldest = &ov->trails[0];
     for (int i = 0; i < MAX_TRAILS; i++) {
@@ -185,7 +185,7 @@ static int clampi(double v, int lo, int hi)
     return (int)v;
 }
 
-int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
+int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
                      const ct_candidate *cands, size_t nc, char *err, size_t err_len)
 {
     ov->frame++;
@@ -231,7 +231,7 @@ int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *trac
     return 0;
 }
 
-int ct_overlay_close(ct_overlay *ov, char *err, size_t err_len)
+int overlay_close(overlay_writer *ov, char *err, size_t err_len)
 {
     if (!ov)
         return 0;

@@ -7,11 +7,11 @@
 
 #include "ctrack/ctrack.h"
 
-typedef struct ct_overlay ct_overlay;
+typedef struct overlay_writer overlay_writer;
 
 /* Opens `path` ("-" for standard output) for frames of w x h at the rate
  * num/den. Returns NULL with a message in err. */
-ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int rate_den,
+overlay_writer *overlay_open(const char *path, int w, int h, int rate_num, int rate_den,
                             char *err, size_t err_len);
 
 /* Writes one frame: `frame`'s pixels (or mid grey when it has none) with the
@@ -19,10 +19,10 @@ ct_overlay *ct_overlay_open(const char *path, int w, int h, int rate_num, int ra
  * thin box, white when the contour template takes it for a pedestrian (score
  * above 0.5), red when not, with its score in percent. Returns 0, or -1 with
  * a message in err. */
-int ct_overlay_write(ct_overlay *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
+int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
                      const ct_candidate *cands, size_t nc, char *err, size_t err_len);
 
 /* Closes the file; returns -1 with a message if a write failed. */
-int ct_overlay_close(ct_overlay *ov, char *err, size_t err_len);
+int overlay_close(overlay_writer *ov, char *err, size_t err_len);
 
 #endif

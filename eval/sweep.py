@@ -12,31 +12,26 @@ run at 1/k of its frame rate for each k given, from every offset (as make
 eval's lower-rate table), and its cell is the mean over those runs.
 """
 import argparse
-import configparser
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mot_score import score  # noqa: E402
+from cteval.data import ct_track, seqinfo, subsampled, video
+from cteval.score import score
 
 
 def sequences(data_dir):
     for name in sorted(os.listdir(data_dir)):
-        ini = os.path.join(data_dir, name, "seqinfo.ini")
-        if os.path.exists(ini):
-            c = configparser.ConfigParser()
-            c.read(ini)
-            s = c["Sequence"]
-            yield name, int(s["imWidth"]), int(s["imHeight"]), float(s["frameRate"])
+        if os.path.exists(os.path.join(data_dir, name, "seqinfo.ini")):
+            i = seqinfo(name, data_dir)
+            yield name, i["width"], i["height"], i["fps"]
 
 
 def variants(data_dir, steps, pixels, tmp):
     """Per sequence, the runs that make its cell: (size, fps, det, gt,
     video or None). Step 1 is the sequence itself; the others are made once
-    in tmp (eval.subsampled)."""
+    in tmp (cteval.data.subsampled)."""
     out = {}
     for name, w, h, fps in sequences(data_dir):
         runs = []
@@ -47,10 +42,8 @@ def variants(data_dir, steps, pixels, tmp):
                     gt = os.path.join(data_dir, name, "gt", "gt.txt")
                     y4m = None
                     if pixels:
-                        from eval import video
                         y4m = video(name)
                 else:
-                    from eval import seqinfo, subsampled, video
                     y4m, gt, det, _ = subsampled(name, seqinfo(name),
                                                  video(name) if pixels else None, k, offset,
                                                  tmp, data=data_dir)
@@ -66,7 +59,7 @@ def run(build, runs, params, detections=True):
         for (w, h), fps, det, gt, y4m in seq_runs:
             with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
                 tracks = f.name
-            cmd = [os.path.join(build, "tools", "ct-track"), "-q",
+            cmd = [ct_track(build), "-q",
                    "-s", "%dx%d" % (w, h), "-r", str(fps), "-o", tracks]
             if detections:
                 cmd += ["-d", det]

@@ -1,0 +1,109 @@
+"""The repository's sequences (tests/data/mot15), their videos decoded to
+Y4M and cached, and ct-track runs over them."""
+import configparser
+import os
+import subprocess
+import time
+
+import numpy as np
+
+from .y4m import open_y4m
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DATA = os.path.join(TOP, "tests", "data", "mot15")
+SCRIPTS = os.path.join(TOP, "scripts")
+
+
+def seqinfo(seq, data=DATA):
+    c = configparser.ConfigParser()
+    c.read(os.path.join(data, seq, "seqinfo.ini"))
+    s = c["Sequence"]
+    return {"frames": int(s["seqLength"]), "fps": float(s["frameRate"]),
+            "width": int(s["imWidth"]), "height": int(s["imHeight"])}
+
+
+def cache_dir():
+    """Where decoded videos are kept: $CT_CACHE, as scripts/fetch-pets09.sh."""
+    d = os.environ.get("CT_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "ctrack")
+    os.makedirs(d, exist_ok=True)
+    return d
+
+
+def video(seq):
+    """A cached Y4M of the sequence's frames."""
+    if seq == "PETS09-S2L1":
+        return subprocess.run([os.path.join(SCRIPTS, "fetch-pets09.sh")], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    out = os.path.join(cache_dir(), seq.lower() + ".y4m")
+    if not os.path.exists(out):
+        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i",
+                        os.path.join(DATA, seq, "video.mp4"), "-f", "yuv4mpegpipe",
+                        "-pix_fmt", "yuv420p", out + ".part"], check=True)
+        os.replace(out + ".part", out)
+    return out
+
+
+def load_dets(seq, path=None):
+    d = np.loadtxt(path or os.path.join(DATA, seq, "det", "det.txt"), delimiter=",", ndmin=2)
+    return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}
+
+
+def subsampled(seq, info, y4m, k, offset, tmp, data=DATA):
+    """The sequence at 1/k of its frame rate: frames offset+1, offset+1+k,
+    ... kept and numbered again from 1. Writes a Y4M of the video y4m (none
+    when y4m is None) and the ground truth and detections of those frames
+    into tmp; returns (y4m or None, gt, det, info)."""
+    tag = "%s-%dof%d" % (seq, offset + 1, k)
+    out = None
+    if y4m is not None:
+        w, h, (num, den), frames = open_y4m(y4m)
+        out = os.path.join(tmp, tag + ".y4m")
+        with open(out, "wb") as f:
+            f.write(b"YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg\n" % (w, h, num, den * k))
+            for row in frames[offset::k]:
+                f.write(b"FRAME\n")
+                f.write(row.tobytes())
+    paths = []
+    for kind in ("gt", "det"):
+        a = np.loadtxt(os.path.join(data, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
+        a = a[(a[:, 0] - 1 - offset) % k == 0]
+        a[:, 0] = (a[:, 0] - 1 - offset) // k + 1
+        paths.append(os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
+        np.savetxt(paths[-1], a, delimiter=",", fmt="%.6g")
+    sub = dict(info, fps=info["fps"] / k, frames=len(range(offset, info["frames"], k)))
+    return out, paths[0], paths[1], sub
+
+
+def write_rows(path, rows):
+    """MOTChallenge lines of (frame, id, left, top, width, height) rows."""
+    with open(path, "w") as f:
+        for k, tid, x, y, w, h in rows:
+            f.write("%d,%d,%.2f,%.2f,%.2f,%.2f,1,-1,-1,-1\n" % (k, tid, x, y, w, h))
+
+
+def ct_track(build):
+    return os.path.join(build, "tools", "ct-track")
+
+
+def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True, det=None):
+    """ct-track over a sequence: its detections (or det), its frames when
+    pixels; returns the wall time in seconds."""
+    cmd = [ct_track(build), "-q", "-o", out]
+    if detections:
+        cmd += ["-d", det or os.path.join(DATA, seq, "det", "det.txt")]
+    for p in params:
+        cmd += ["-p", p]
+    if pixels:
+        cmd += ["-r", str(info["fps"]), y4m]
+    else:
+        cmd += ["-s", "%dx%d" % (info["width"], info["height"]), "-r", str(info["fps"])]
+    t0 = time.perf_counter()
+    subprocess.run(cmd, check=True)
+    return time.perf_counter() - t0
+
+
+def ctrack_version():
+    """MAJOR.MINOR.PATCH from include/ctrack/ctrack.h."""
+    return subprocess.run([os.path.join(SCRIPTS, "version.sh")], check=True,
+                          capture_output=True, text=True).stdout.strip()

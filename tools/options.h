@@ -1,0 +1,28 @@
+/* ct-track's command line: the options, their checks and --help. */
+#ifndef CT_TOOLS_OPTIONS_H
+#define CT_TOOLS_OPTIONS_H
+
+#include <stdint.h>
+
+#include "ctrack/ctrack.h"
+
+enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+typedef struct options {
+    ct_config cfg;           /* defaults, then --param; source set from the inputs */
+    const char *input_path;  /* NULL: detections only */
+    const char *det_path;    /* NULL: the tracker finds people in the pixels */
+    const char *out_path;    /* NULL: standard output */
+    const char *overlay_path, *candidates_path;
+    int width, height;       /* --size (raw video, or detections only) */
+    uint32_t format;         /* --format of a raw video */
+    double fps;              /* --fps, 0 when not given */
+    int no_pixels, progress, stats, overlay_candidates;
+} options;
+
+/* Reads the command line into *o. Returns -1 when ct-track should run, or
+ * the exit status when it should stop here (0 after --help or --version,
+ * EXIT_USAGE after a message on standard error). */
+int options_parse(int argc, char **argv, options *o);
+
+#endif
