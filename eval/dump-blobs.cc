@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "video.h"
-#include "tracker.h"
+#include "engine.h"
 
 int main(int argc, char **argv)
 {

@@ -7,13 +7,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "mask.h"
 #include "planes.h"
 
 namespace ctrack {
-
-struct Rect {
-    int x0, y0, x1, y1; // [x0, x1) x [y0, y1), working pixels
-};
 
 class Background {
 public:

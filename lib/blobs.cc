@@ -1,8 +1,6 @@
 // The only file of the library that includes OpenCV.
 #include "blobs.h"
 
-#include "contour_template.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -50,7 +48,6 @@ struct BlobFinder::Impl {
     std::vector<Rect> blobs;
     std::vector<int> columns, centres, tops;
     std::vector<float> votes;
-    Shape shape;
 };
 
 BlobFinder::BlobFinder() : impl_(new Impl) {}
@@ -61,21 +58,28 @@ const uint8_t *BlobFinder::cleaned() const
     return impl_->clean.data;
 }
 
+int BlobFinder::width() const
+{
+    return impl_->clean.cols;
+}
+
+int BlobFinder::height() const
+{
+    return impl_->clean.rows;
+}
+
 size_t BlobFinder::memory_bytes() const
 {
     const Impl &m = *impl_;
     return m.clean.total() + m.tmp.total() + m.blobs.capacity() * sizeof(Rect) +
-           m.votes.capacity() * sizeof(float) + m.shape.cells.capacity() +
-           (m.shape.todo.capacity() + m.columns.capacity() + m.centres.capacity() +
+           m.votes.capacity() * sizeof(float) +
+           (m.columns.capacity() + m.centres.capacity() +
             m.tops.capacity()) * sizeof(int);
 }
 
-Vote BlobFinder::classify(const Rect &r)
+float BlobFinder::vote(Classifier &cls, const Rect &r) const
 {
-    Impl &m = *impl_;
-    const int w = m.clean.cols;
-    shape_of(m.clean.data, w, r.x0, r.y0, r.x1, r.y1, &m.shape);
-    return ctrack::classify(m.shape, default_thresholds());
+    return cls.vote(impl_->clean.data, impl_->clean.cols, r).score;
 }
 
 void BlobFinder::clean(const uint8_t *mask, int w, int h)
@@ -101,7 +105,7 @@ Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
     return p;
 }
 
-int BlobFinder::between_heads(const Rect &r)
+int BlobFinder::between_heads(const Rect &r, Classifier &cls)
 {
     Impl &m = *impl_;
     const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
@@ -146,14 +150,14 @@ int BlobFinder::between_heads(const Rect &r)
     // The template decides: both parts must be pedestrians by its vote,
     // and look more like one than the whole does.
     const int cut = r.x0 + (dip + last + 1) / 2;
-    const float whole = std::max(vote(r), 0.5f);
-    if (vote(rows_of(r, r.x0, cut)) > whole && vote(rows_of(r, cut, r.x1)) > whole)
+    const float whole = std::max(vote(cls, r), 0.5f);
+    if (vote(cls, rows_of(r, r.x0, cut)) > whole && vote(cls, rows_of(r, cut, r.x1)) > whole)
         return cut;
     return -1;
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-                      std::vector<Rect> &out)
+                      Classifier &cls, std::vector<Rect> &out)
 {
     Impl &m = *impl_;
     out.clear();
@@ -176,7 +180,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     votes.assign(b.size(), NAN);
     auto vote_of = [&](size_t k) {
         if (std::isnan(votes[k]))
-            votes[k] = vote(b[k]);
+            votes[k] = vote(cls, b[k]);
         return votes[k];
     };
     for (bool merged = true; merged;) {
@@ -195,7 +199,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                 // looks more like a person than either part does.
                 float vu = NAN;
                 if (gap > kMergeGap * tall) {
-                    vu = vote(u);
+                    vu = vote(cls, u);
                     if (!(vu > std::max(vote_of(i), vote_of(j))))
                         continue;
                 }
@@ -235,7 +239,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         centres.resize(kept);
         int head_cut = -1;
         if (parts < 2 && centres.size() < 2) {
-            head_cut = between_heads(r);
+            head_cut = between_heads(r, cls);
             if (head_cut < 0) {
                 out.push_back(r);
                 continue;

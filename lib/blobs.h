@@ -1,6 +1,6 @@
 // From the foreground mask to person-sized candidates: morphology, contours
-// (OpenCV), fragments merged, groups split. OpenCV's headers stay in
-// blobs.cc.
+// (OpenCV), fragments merged, groups split, with the classifier's consent
+// where a merge or a split is in doubt. OpenCV's headers stay in blobs.cc.
 #ifndef CTRACK_BLOBS_H
 #define CTRACK_BLOBS_H
 
@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "background.h"
-#include "contour_template.h"
+#include "classifier.h"
+#include "mask.h"
 
 namespace ctrack {
 
@@ -24,26 +24,27 @@ public:
     // its blobs: those at least min_area pixels, fragments of one person
     // (stacked one above the other) merged, and blobs wider than a person
     // split, at the predicted boxes' centres when tracks are there, else
-    // into equal parts at the valleys of the column profile.
+    // into equal parts at the valleys of the column profile. `cls` votes
+    // where a merge or a split is in doubt.
     void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-              std::vector<Rect> &out);
+              Classifier &cls, std::vector<Rect> &out);
     // Only the cleaning: the closing of the w x h mask.
     void clean(const uint8_t *mask, int w, int h);
-    // The cleaned mask of the last find() or clean().
+    // The cleaned mask of the last find() or clean(), and its size.
     const uint8_t *cleaned() const;
-    // The contour template's vote on the cleaned mask inside r (within the
-    // mask).
-    Vote classify(const Rect &r);
+    int width() const;
+    int height() const;
     size_t memory_bytes() const;
 
 private:
-    float vote(const Rect &r) { return classify(r).score; }
+    // The classifier's score of the cleaned mask inside r.
+    float vote(Classifier &cls, const Rect &r) const;
     // The part of r between columns x0 and x1, with its own rows.
     Rect rows_of(const Rect &r, int x0, int x1) const;
     // Where to cut r between two people side by side, from two heads on its
     // top edge, when the contour template takes both parts for pedestrians
     // and scores them above the whole: the column, or -1.
-    int between_heads(const Rect &r);
+    int between_heads(const Rect &r, Classifier &cls);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -14,7 +14,7 @@
 #include "error.h"
 #include "frame.h"
 #include "sized.h"
-#include "tracker.h"
+#include "engine.h"
 
 #define CT_STR2(x) #x
 #define CT_STR(x) CT_STR2(x)

@@ -7,6 +7,11 @@
 
 namespace ctrack {
 
+// A box of mask pixels: [x0, x1) x [y0, y1).
+struct Rect {
+    int x0, y0, x1, y1;
+};
+
 // Whether pixel (x, y) of the mask (rows of `stride` bytes) is on the
 // outline of the foreground inside the box [x0, x1) x [y0, y1), which lies
 // within the mask: foreground, with a 4-neighbour that is background or

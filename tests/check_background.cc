@@ -12,7 +12,7 @@
 
 #include "background.h"
 #include "blobs.h"
-#include "contour_template.h"
+#include "classifier.h"
 
 using namespace ctrack;
 
@@ -284,8 +284,9 @@ START_TEST(fragments_merge_and_groups_split)
     rect(20, 33, 30, 55);  // legs, a small gap below
     rect(80, 20, 120, 60); // two people of 40 rows side by side
     BlobFinder bf;
+    Classifier cls;
     std::vector<Rect> out;
-    bf.find(m.data(), W, H, nullptr, 0, out);
+    bf.find(m.data(), W, H, nullptr, 0, cls, out);
     ck_assert_int_eq((int)out.size(), 3);
     int merged = 0, parts = 0;
     for (const Rect &r : out) {
@@ -317,10 +318,11 @@ START_TEST(close_pair_splits_between_tracks)
         for (int c = 93; c < 97; c++)
             m[r * W + c] = 0;
     BlobFinder bf;
+    Classifier cls;
     std::vector<Rect> out;
     auto track_at = [](int centre) { return Rect{centre - 8, 20, centre + 8, 60}; };
     const Rect two[2] = {track_at(88), track_at(100)}; // 12 apart, 0.3 heights
-    bf.find(m.data(), W, H, two, 2, out);
+    bf.find(m.data(), W, H, two, 2, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     const Rect &right = out[0].x0 < out[1].x0 ? out[1] : out[0];
@@ -330,11 +332,11 @@ START_TEST(close_pair_splits_between_tracks)
     ck_assert_int_eq(right.x0, 94);
     // No tracks, one, or two closer than a fifth of the height: one blob.
     for (int n : {0, 1}) {
-        bf.find(m.data(), W, H, two, n, out);
+        bf.find(m.data(), W, H, two, n, cls, out);
         ck_assert_int_eq((int)out.size(), 1);
     }
     const Rect close[2] = {track_at(92), track_at(97)}; // 5 apart
-    bf.find(m.data(), W, H, close, 2, out);
+    bf.find(m.data(), W, H, close, 2, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -399,12 +401,13 @@ START_TEST(pair_splits_between_heads)
                     m[(20 + r) * W + x0 + c] = 255;
     };
     BlobFinder bf;
+    Classifier cls;
     std::vector<Rect> out;
     person(40);
-    bf.find(m.data(), W, H, nullptr, 0, out);
+    bf.find(m.data(), W, H, nullptr, 0, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
     person(58); // heads at columns 55 and 73: 0.225 heights apart
-    bf.find(m.data(), W, H, nullptr, 0, out);
+    bf.find(m.data(), W, H, nullptr, 0, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     ck_assert_msg(left.x1 > 58 && left.x1 < 70, "cut at %d, not between the heads (55, 73)",
@@ -414,7 +417,7 @@ START_TEST(pair_splits_between_heads)
         for (int c = 40; c < 88; c++)
             if (r >= 30 || (c >= 46 && c < 54) || (c >= 74 && c < 82))
                 m[r * W + c] = 255;
-    bf.find(m.data(), W, H, nullptr, 0, out);
+    bf.find(m.data(), W, H, nullptr, 0, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -435,7 +438,7 @@ START_TEST(library_silhouettes_are_pedestrians)
             return std::fabs(u - 0.5) < 0.5 - 0.1 * (v - 0.16) / 0.37;
         return std::fabs(u - 0.5) < 0.4 * (1 - (v - 0.53) * 0.3);
     });
-    Vote v = classify(p, default_thresholds());
+    Vote v = classify(p, default_params());
     ck_assert_int_ge(v.voters, kMinVoters);
     ck_assert_msg(v.score > 0.5f, "a person-shaped mask scored %.2f", (double)v.score);
 }
@@ -461,9 +464,9 @@ START_TEST(fill_of_the_convex_hull)
     // A walking person (head, neck, torso with arms, legs apart) fills far
     // less, and the vote takes them for a pedestrian.
     const Shape walker = shape_of(walking_person);
-    ck_assert_msg(walker.profile.fill < default_thresholds().max_fill,
+    ck_assert_msg(walker.profile.fill < default_params().veto.max_fill,
                   "a walking person fills %.2f of the hull", (double)walker.profile.fill);
-    const Vote v = classify(walker, default_thresholds());
+    const Vote v = classify(walker, default_params());
     ck_assert_msg(v.score > 0.5f, "a walking person scored %.2f", (double)v.score);
 }
 END_TEST
@@ -491,8 +494,8 @@ START_TEST(hull_filling_non_human_shapes_are_rejected)
     };
     for (const auto &sh : shapes) {
         const Shape s = shape_of(sh.inside);
-        const Vote v = classify(s, default_thresholds());
-        ck_assert_msg(v.fill > default_thresholds().max_fill, "%s fills %.2f", sh.name,
+        const Vote v = classify(s, default_params());
+        ck_assert_msg(v.fill > default_params().veto.max_fill, "%s fills %.2f", sh.name,
                       (double)v.fill);
         ck_assert_msg(v.score <= 0.5f, "%s scored %.2f (%d of %d regions)", sh.name,
                       (double)v.score, v.yes, v.voters);
@@ -527,14 +530,14 @@ START_TEST(wide_topped_non_human_shapes_are_rejected)
     for (const auto &sz : sizes) {
         for (const auto &sh : shapes) {
             const Shape s = shape_of(sh.inside, sz[0], sz[1]);
-            const Vote v = classify(s, default_thresholds());
-            ck_assert_msg(v.top > kMaxTopWidth, "%s at %dx%d: top %.2f of its body", sh.name,
+            const Vote v = classify(s, default_params());
+            ck_assert_msg(v.top > default_params().veto.max_top_width, "%s at %dx%d: top %.2f of its body", sh.name,
                           sz[0], sz[1], (double)v.top);
             ck_assert_msg(v.score <= 0.5f, "%s at %dx%d scored %.2f (%d of %d regions)",
                           sh.name, sz[0], sz[1], (double)v.score, v.yes, v.voters);
         }
         const Shape walker = shape_of(walking_person, sz[0], sz[1]);
-        const Vote w = classify(walker, default_thresholds());
+        const Vote w = classify(walker, default_params());
         ck_assert_msg(w.top < 0.3f, "a walking person's top: %.2f of the body", (double)w.top);
         ck_assert_msg(w.score > 0.5f, "a walking person at %dx%d scored %.2f", sz[0], sz[1],
                       (double)w.score);
@@ -543,7 +546,7 @@ START_TEST(wide_topped_non_human_shapes_are_rejected)
                 return walking_person(u, v) || (std::fabs(v - .3) < .04 && std::fabs(u - .5) < .5);
             },
             sz[0], sz[1]);
-        ck_assert_msg(classify(arms_out, default_thresholds()).score > 0.5f,
+        ck_assert_msg(classify(arms_out, default_params()).score > 0.5f,
                       "a person with arms held out at %dx%d was rejected", sz[0], sz[1]);
         const Shape side = shape_of(
             [](double u, double v) {
@@ -558,7 +561,7 @@ START_TEST(wide_topped_non_human_shapes_are_rejected)
                 return std::fabs(u - 0.5 - 0.35 * t) < 0.12 || std::fabs(u - 0.5 + 0.35 * t) < 0.12;
             },
             sz[0], sz[1]);
-        const Vote sv = classify(side, default_thresholds());
+        const Vote sv = classify(side, default_params());
         ck_assert_msg(sv.score > 0.5f, "a person seen from the side at %dx%d scored %.2f (top %.2f)",
                       sz[0], sz[1], (double)sv.score, (double)sv.top);
     }
@@ -572,14 +575,14 @@ START_TEST(occluded_regions_abstain)
     Shape p = shape_of(rectangle);
     for (int r = 36; r < kRows; r++)
         p.profile.edge[r][0] = p.profile.edge[r][1] = Profile::kEmpty;
-    Vote v = classify(p, default_thresholds());
+    Vote v = classify(p, default_params());
     ck_assert_float_eq(v.distance[kLowerLimbs], -1.0f);
     ck_assert_int_eq(v.voters, kRegions - 1);
     ck_assert_str_eq(region_name(kLowerLimbs), "lower limbs");
     ck_assert_ptr_null(region_name(kRegions));
     // No foreground at all: no region votes, and every distance says so.
     Shape empty = shape_of([](double, double) { return false; });
-    v = classify(empty, default_thresholds());
+    v = classify(empty, default_params());
     ck_assert_int_eq(v.voters, 0);
     ck_assert_float_eq(v.score, 0.0f);
     for (int g = 0; g < kRegions; g++)
@@ -633,7 +636,7 @@ START_TEST(real_blobs_are_classified)
         ck_assert(b.sequence == 0 || b.sequence == 1);
         ck_assert(b.label == 0 || b.label == 1);
         shape_of(b.mask.data(), b.w, 0, 0, b.w, b.h, &shape);
-        const bool person = classify(shape, default_thresholds()).score > 0.5f;
+        const bool person = classify(shape, default_params()).score > 0.5f;
         n[b.sequence][b.label]++;
         ok[b.sequence][b.label] += person == (b.label == 1);
     }

@@ -1,0 +1,152 @@
+#include "candidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clock.h"
+
+namespace ctrack {
+
+namespace {
+
+// Model edges over frame edges above which a blob is a ghost: what has left
+// but is still in the model (people of the first frames, a car that drove
+// off) has its edges in the model, a real object in the frame. The choice
+// is measured in docs/notes/pixels.md.
+constexpr double kGhostEdges = 2.0;
+
+Rect to_working(const Box &b)
+{
+    const int s = Background::kScale;
+    return Rect{(int)std::floor(b.left / s), (int)std::floor(b.top / s),
+                (int)std::ceil((b.left + b.width) / s), (int)std::ceil((b.top + b.height) / s)};
+}
+
+} // namespace
+
+void PixelCandidates::clear()
+{
+    have_mask_ = false;
+    candidates_.clear();
+}
+
+void PixelCandidates::reset()
+{
+    background_.reset();
+    candidates_.clear();
+}
+
+size_t PixelCandidates::memory_bytes() const
+{
+    return background_.memory_bytes() + blobs_.memory_bytes() + classifier_.memory_bytes() +
+           (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
+           dets_.capacity() * sizeof(ct_detection) + candidates_.capacity() * sizeof(ct_candidate);
+}
+
+void PixelCandidates::update_background(int64_t t_us, const Planes &img,
+                                        const std::vector<Track> &tracks)
+{
+    frozen_.clear();
+    predicted_.clear();
+    for (const Track &t : tracks) {
+        if (t.state == CT_TRACK_TENTATIVE)
+            continue;
+        predicted_.push_back(to_working(t.box()));
+        // Where a confirmed track stands, the background learns nothing: a
+        // person who stops stays foreground. Only tracks that have moved:
+        // a track that never did may stand on a ghost of the model, which
+        // freezing would keep forever.
+        if (t.state == CT_TRACK_CONFIRMED && t.moved)
+            frozen_.push_back(predicted_.back());
+    }
+    background_.apply(t_us, img, frozen_.data(), (int)frozen_.size());
+}
+
+void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+                           uint64_t *stage_ns)
+{
+    dets_.clear();
+    if (img.empty())
+        return;
+    Stopwatch sw;
+    update_background(t_us, img, tracks);
+    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    blobs_.find(background_.mask(), background_.width(), background_.height(), predicted_.data(),
+                (int)predicted_.size(), classifier_, blob_rects_);
+    have_mask_ = true;
+    stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    candidates_.clear();
+    const int s = Background::kScale;
+    for (const Rect &r : blob_rects_) {
+        // A ghost is learnt at once and is no candidate.
+        long frame_edges, model_edges;
+        background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
+        if (model_edges > kGhostEdges * frame_edges) {
+            background_.absorb(img, blobs_.cleaned(), r);
+            continue;
+        }
+        const ct_candidate c = classifier_.candidate(
+            blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
+            (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
+        candidates_.push_back(c);
+        dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
+    }
+    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+void PixelCandidates::verify(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+                             const ct_detection *dets, size_t n, uint64_t *stage_ns)
+{
+    Stopwatch sw;
+    update_background(t_us, img, tracks);
+    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    blobs_.clean(background_.mask(), background_.width(), background_.height());
+    have_mask_ = true;
+    stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    dets_.clear();
+    candidates_.clear();
+    for (size_t j = 0; j < n; j++) {
+        const ct_detection &d = dets[j];
+        const ct_candidate c = classifier_.candidate(
+            blobs_.cleaned(), background_.width(), background_.height(),
+            to_working(Box{d.left, d.top, d.width, d.height}), d.left, d.top, d.width, d.height);
+        candidates_.push_back(c);
+        ct_detection v = d;
+        if (rejects(c))
+            v.score *= c.score;
+        dets_.push_back(v);
+    }
+    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+const uint8_t *PixelCandidates::foreground(int *w, int *h) const
+{
+    *w = background_.width();
+    *h = background_.height();
+    return have_mask_ ? blobs_.cleaned() : nullptr;
+}
+
+void PixelCandidates::barycenter(const Box &b, float *x, float *y) const
+{
+    *x = (float)(b.left + b.width / 2);
+    *y = (float)(b.top + b.height / 2);
+    if (!have_mask_)
+        return;
+    const int s = Background::kScale, w = background_.width(), h = background_.height();
+    const Rect r = to_working(b);
+    const uint8_t *m = blobs_.cleaned();
+    long sx = 0, sy = 0, n = 0;
+    for (int yy = std::max(0, r.y0); yy < std::min(h, r.y1); yy++)
+        for (int xx = std::max(0, r.x0); xx < std::min(w, r.x1); xx++)
+            if (m[(size_t)yy * w + xx]) {
+                sx += xx;
+                sy += yy;
+                n++;
+            }
+    if (n > 0) {
+        *x = (float)((sx / (double)n + 0.5) * s);
+        *y = (float)((sy / (double)n + 0.5) * s);
+    }
+}
+
+} // namespace ctrack

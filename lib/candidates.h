@@ -1,0 +1,67 @@
+// Candidates from the pixels: the background model's foreground, its blobs,
+// and the classifier's vote on each (source CT_SOURCE_PIXELS), or on each
+// of the host's detections (verify_detections).
+#ifndef CTRACK_CANDIDATES_H
+#define CTRACK_CANDIDATES_H
+
+#include <cstdint>
+#include <vector>
+
+#include "background.h"
+#include "blobs.h"
+#include "classifier.h"
+#include "planes.h"
+#include "track.h"
+
+namespace ctrack {
+
+class PixelCandidates {
+public:
+    // Forgets this step's mask and candidates (at the start of every step).
+    void clear();
+    // Blobs of the frame's foreground as candidates (candidates()) and as
+    // detections scored by their vote (dets()). `tracks` are the engine's,
+    // predicted to this frame: confirmed tracks that have moved freeze the
+    // background under them, and tracks inside a blob split it. The time
+    // of each stage goes to stage_ns.
+    void find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+              uint64_t *stage_ns);
+    // The vote on the foreground inside each of the n detections: one
+    // candidate each, in order, and dets() the detections with the score of
+    // those the vote rejects multiplied by the vote's.
+    void verify(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+                const ct_detection *dets, size_t n, uint64_t *stage_ns);
+
+    const std::vector<ct_detection> &dets() const { return dets_; }
+    const std::vector<ct_candidate> &candidates() const { return candidates_; }
+    std::vector<ct_candidate> &candidates() { return candidates_; }
+    // The centroid of this step's foreground inside b, or its centre.
+    void barycenter(const Box &b, float *x, float *y) const;
+    // This step's cleaned foreground mask at the background model's scale
+    // (Background::kScale), or null when the step had no pixels.
+    const uint8_t *foreground(int *w, int *h) const;
+
+    // The background model starts again with the next frame.
+    void reset();
+    // The background model's update of a step stands (commit) or is undone
+    // (rollback, after a failed step).
+    void commit() { background_.commit(); }
+    void rollback() { background_.rollback(); }
+    size_t memory_bytes() const;
+
+private:
+    // The background model over this frame (tracks that moved are frozen).
+    void update_background(int64_t t_us, const Planes &img, const std::vector<Track> &tracks);
+
+    Background background_;
+    BlobFinder blobs_;
+    Classifier classifier_;
+    bool have_mask_ = false; // this step
+    std::vector<Rect> frozen_, predicted_, blob_rects_;
+    std::vector<ct_detection> dets_;
+    std::vector<ct_candidate> candidates_;
+};
+
+} // namespace ctrack
+
+#endif

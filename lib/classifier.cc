@@ -1,0 +1,241 @@
+#include "classifier.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ctrack {
+
+namespace {
+
+#include "silhouettes.inc"
+#include "classifier_params.inc"
+
+// The regions as zones of the canonical box: row bands of the 64-row
+// profile and which edges count (0 left, 1 right, 2 both). Front and back
+// mean nothing in a frontal view, so the halves are left and right. Zones
+// overlap: the upper limbs share rows with chest, back, abdomen and
+// buttocks, and a point counts in every region whose zone holds it.
+struct Zone {
+    int row0, row1, side;
+};
+constexpr Zone kZones[kRegions] = {
+    {0, 8, 2},    // head
+    {8, 11, 2},   // neck
+    {11, 16, 2},  // shoulders
+    {16, 29, 0},  // chest
+    {16, 29, 1},  // back
+    {29, 36, 0},  // abdomen
+    {29, 36, 1},  // buttocks
+    {16, 36, 2},  // upper limbs
+    {36, 64, 2},  // lower limbs
+};
+
+// Each outline point's cell on the canvas and the regions holding it, made
+// at compile time from the silhouettes.
+struct PointInfo {
+    uint16_t cell;    // row * kGrid + col
+    uint16_t regions; // bit g: region g holds the point
+};
+
+constexpr int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+struct PointTable {
+    PointInfo p[kSilhouettes][kOutlinePoints];
+};
+
+constexpr PointTable make_points()
+{
+    PointTable t{};
+    for (int s = 0; s < kSilhouettes; s++)
+        for (int k = 0; k < kOutlinePoints; k++) {
+            const float x = kOutline[s][k][0], y = kOutline[s][k][1];
+            const int col = clampi((int)((x + 0.5f) * kGrid), 0, kGrid - 1);
+            const int row = clampi((int)(y * kGrid), 0, kGrid - 1);
+            const int side = x < 0 ? 0 : 1;
+            uint16_t regions = 0;
+            for (int g = 0; g < kRegions; g++) {
+                const Zone &z = kZones[g];
+                if (row >= z.row0 * kGrid / kRows && row < z.row1 * kGrid / kRows &&
+                    (z.side == 2 || z.side == side))
+                    regions |= (uint16_t)(1u << g);
+            }
+            t.p[s][k] = PointInfo{(uint16_t)(row * kGrid + col), regions};
+        }
+    return t;
+}
+
+constexpr PointTable kPoints = make_points();
+
+// The same points grouped by region, for classify(): each silhouette's
+// cells of region g are cell[s][start[s][g]] up to cell[s][start[s][g + 1]]
+// (a point in two regions is listed in both).
+constexpr int kMaxEntries = 2 * kOutlinePoints;
+struct RegionCells {
+    uint16_t cell[kSilhouettes][kMaxEntries];
+    uint16_t start[kSilhouettes][kRegions + 1];
+};
+
+constexpr RegionCells make_region_cells()
+{
+    RegionCells t{};
+    for (int s = 0; s < kSilhouettes; s++) {
+        int k = 0;
+        for (int g = 0; g < kRegions; g++) {
+            t.start[s][g] = (uint16_t)k;
+            for (int i = 0; i < kOutlinePoints; i++)
+                if (kPoints.p[s][i].regions & (1u << g)) {
+                    if (k == kMaxEntries)
+                        throw "a point is in more than two regions"; // not a constant
+                    t.cell[s][k++] = kPoints.p[s][i].cell;
+                }
+        }
+        t.start[s][kRegions] = (uint16_t)k;
+    }
+    return t;
+}
+
+constexpr RegionCells kRegionCells = make_region_cells();
+
+// The head's rows (the median of eight rows is the fifth smallest: an
+// upper median).
+constexpr int kHeadRows = kZones[kHead].row1 - kZones[kHead].row0;
+
+const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "back",
+                                      "abdomen", "buttocks", "upper limbs", "lower limbs"};
+
+} // namespace
+
+const char *region_name(int r)
+{
+    return r >= 0 && r < kRegions ? kNames[r] : nullptr;
+}
+
+const ClassifierParams &default_params()
+{
+    return kDefaultParams;
+}
+
+float top_width(const Profile &p)
+{
+    float head[kHeadRows];
+    for (int r = 0; r < kHeadRows; r++)
+        head[r] = p.extent(r);
+    std::nth_element(head, head + kHeadRows / 2, head + kHeadRows);
+    const float top = head[kHeadRows / 2];
+    // The body from the shoulders down: a person seen from the side has a
+    // head as wide as their torso at the working scale, but legs in stride
+    // wider than both.
+    float body = 0;
+    for (int r = kZones[kShoulders].row0; r < kRows; r++)
+        body = std::max(body, p.extent(r));
+    // Like a region, the torso abstains when fewer than half its rows hold
+    // foreground (hidden, or in pieces that the fragments' merging did not
+    // join): then no comparison.
+    int present = 0;
+    const int r0 = kZones[kShoulders].row0, r1 = kZones[kButtocks].row1;
+    for (int r = r0; r < r1; r++)
+        present += !p.empty(r);
+    return 2 * present >= r1 - r0 && body > 0 ? top / body : 0;
+}
+
+Vote classify(const Shape &shape, const ClassifierParams &params)
+{
+    const Profile &p = shape.profile;
+    // Which regions vote depends on the blob alone.
+    bool votes[kRegions];
+    for (int g = 0; g < kRegions; g++) {
+        const Zone &z = kZones[g];
+        int present = 0;
+        for (int r = z.row0; r < z.row1; r++)
+            present += !p.empty(r);
+        votes[g] = 2 * present >= z.row1 - z.row0;
+    }
+    Vote best;
+    float best_total = INFINITY;
+    const uint16_t *dist = &shape.outline.dist[0][0];
+    for (int s = 0; s < kSilhouettes; s++) {
+        // Sums of chamfer units, exact in integers.
+        uint32_t sum[kRegions] = {0};
+        int n[kRegions] = {0};
+        const uint16_t *cell = kRegionCells.cell[s];
+        const uint16_t *start = kRegionCells.start[s];
+        for (int g = 0; g < kRegions; g++) {
+            if (!votes[g])
+                continue;
+            uint32_t acc = 0;
+            for (int k = start[g]; k < start[g + 1]; k++)
+                acc += dist[cell[k]];
+            sum[g] = acc;
+            n[g] = start[g + 1] - start[g];
+        }
+        Vote v;
+        float total = 0;
+        for (int g = 0; g < kRegions; g++) {
+            if (!votes[g] || n[g] == 0) {
+                v.distance[g] = -1;
+                continue;
+            }
+            v.distance[g] = (float)sum[g] / n[g] * (1.0f / (3 * kGrid)); // box heights
+            v.voters++;
+            v.yes += v.distance[g] <= params.region[g];
+            total += v.distance[g];
+        }
+        v.score = v.voters >= kMinVoters ? (float)v.yes / v.voters : 0;
+        v.silhouette = s;
+        // The closest silhouette (mean distance over the voting regions)
+        // speaks for the library, whatever the thresholds: the distances a
+        // blob reports do not depend on them.
+        const float mean = v.voters ? total / v.voters : INFINITY;
+        if (mean < best_total) {
+            best = v;
+            best_total = mean;
+        }
+    }
+    // The vetoes overrule the regions: a blob that fills its convex hull,
+    // or has no head on top (a T, an H, a Π, an X, a Y, a U; a person under
+    // an open umbrella has a T's outline too), is no pedestrian.
+    best.fill = p.fill;
+    best.top = top_width(p);
+    if (best.fill > params.veto.max_fill || best.top > params.veto.max_top_width)
+        best.score = std::min(best.score, 0.5f);
+    return best;
+}
+
+Vote Classifier::vote(const uint8_t *mask, int w, const Rect &r)
+{
+    shape_of(mask, w, r.x0, r.y0, r.x1, r.y1, &shape_);
+    return classify(shape_, default_params());
+}
+
+ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, float left,
+                                   float top, float width, float height)
+{
+    r.x0 = std::max(r.x0, 0);
+    r.y0 = std::max(r.y0, 0);
+    r.x1 = std::min(r.x1, w);
+    r.y1 = std::min(r.y1, h);
+    ct_candidate c = {};
+    c.left = left;
+    c.top = top;
+    c.width = width;
+    c.height = height;
+    if (r.x1 <= r.x0 || r.y1 <= r.y0) {
+        for (float &d : c.region_distance)
+            d = -1;
+        return c; // outside the image: no voters
+    }
+    const Vote v = vote(mask, w, r);
+    c.score = v.score;
+    c.votes_yes = v.yes;
+    c.voters = v.voters;
+    for (int g = 0; g < kRegions; g++)
+        c.region_distance[g] = v.distance[g];
+    c.fill = v.fill;
+    c.top_width = v.top;
+    return c;
+}
+
+} // namespace ctrack

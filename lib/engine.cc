@@ -1,0 +1,409 @@
+#include "engine.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clock.h"
+
+namespace ctrack {
+
+namespace {
+
+// Mean shift follows a track only while this much of its box is in the
+// image: the detector stops seeing a person cut by the border, and the part
+// left in the window does not hold them.
+constexpr double kMinInside = 0.9;
+constexpr double kMinSide = 1.0;
+
+} // namespace
+
+Engine::Engine(const ct_config &cfg) : cfg_(cfg)
+{
+    ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
+    min_rho_ = (int)(cfg.mean_shift_min_similarity * kQ16);
+}
+
+void Engine::reset()
+{
+    pixels_.reset();
+    tracks_.clear();
+    reported_.clear();
+    has_time_ = false;
+    last_us_ = 0;
+}
+
+void Engine::refine(const Planes &img)
+{
+    for (Track &t : tracks_) {
+        if (t.state != CT_TRACK_CONFIRMED || !t.model.valid)
+            continue;
+        Box b = t.box();
+        t.ms = ms_.track(img, t.cx.x, t.cy.x, b.width, b.height, t.model, ms_params_);
+        ms_runs_++;
+        if (t.ms.rho >= min_rho_)
+            t.cue = Box{t.ms.cx - b.width / 2, t.ms.cy - b.height / 2, b.width, b.height};
+    }
+}
+
+void Engine::follow_or_lose(const Planes &img, int64_t t_us)
+{
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
+            t.ms.iterations == 0 || t.ms.rho < min_rho_)
+            continue;
+        if (elapsed_s(t_us, t.last_update_us) > cfg_.mean_shift_max_time)
+            continue;
+        // Behind another person the window sees the occluder: coast instead.
+        if (occluded(tracks_, i))
+            continue;
+        if (inside_fraction(t.box(), img.width, img.height) < kMinInside)
+            continue;
+        ms_.scale(img, t.model, ms_params_, &t.ms);
+        if (t.ms.rho < min_rho_)
+            continue;
+        t.follow(cfg_.detection_noise);
+    }
+}
+
+void Engine::learn_models(const Planes &img)
+{
+    const int mu = (int)std::lround(cfg_.model_learning_rate * 256);
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0)
+            continue;
+        Box b = t.box();
+        if (!t.model.valid || t.model.color != img.color) {
+            ms_.build(img, t.cx.x, t.cy.x, b.width, b.height, &t.model);
+            continue;
+        }
+        if (mu == 0 || occluded(tracks_, i))
+            continue;
+        ms_.learn(img, t.cx.x, t.cy.x, b.width, b.height, mu, min_rho_, &t.model);
+    }
+}
+
+void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
+{
+    t.correct(d, cfg_.detection_noise, index, t_us);
+    if (t.state == CT_TRACK_LOST)
+        t.state = CT_TRACK_CONFIRMED;
+    else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits) {
+        t.state = CT_TRACK_CONFIRMED;
+        t.id = next_id_++;
+    }
+}
+
+void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool confirm)
+{
+    Track t;
+    t.start(d, cfg_.detection_noise, index, t_us);
+    if (confirm || t.hits >= cfg_.min_hits) {
+        t.state = CT_TRACK_CONFIRMED;
+        t.id = next_id_++;
+    }
+    tracks_.push_back(t);
+}
+
+void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+                   const ct_detection *dets, double min_iou)
+{
+    const int n = (int)track_idx.size(), m = (int)det_idx.size();
+    if (n == 0 || m == 0)
+        return;
+    // Cost: 1 - IoU, plus appearance_weight (1 - DDIS) with appearance. A
+    // pair is allowed only when its IoU reaches min_iou (the tiny slack lets
+    // an IoU exactly at the gate through), whatever it looks like.
+    const double w = appearance_ ? cfg_.appearance_weight : 0.0;
+    const double limit = 1.0 - min_iou + w + 1e-12;
+    cost_.resize((size_t)n * m);
+    for (int i = 0; i < n; i++) {
+        const Track &t = tracks_[track_idx[i]];
+        for (int j = 0; j < m; j++) {
+            double o = iou(t.cue, det_box(dets[det_idx[j]]));
+            double c = 1.0 - o;
+            if (o + 1e-12 < min_iou)
+                c = limit; // not allowed
+            else if (w > 0)
+                c += w * (1.0 - bank_.similarity(t, det_idx[j]));
+            cost_[(size_t)i * m + j] = c;
+        }
+    }
+    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
+    for (int i = 0; i < n; i++) {
+        int j = row_to_col_[i];
+        if (j < 0)
+            continue;
+        det_used_[det_idx[j]] = 1;
+        update(tracks_[track_idx[i]], dets[det_idx[j]], det_idx[j], last_us_);
+        track_idx[i] = -1;
+    }
+    track_idx.erase(std::remove(track_idx.begin(), track_idx.end(), -1), track_idx.end());
+    det_idx.erase(std::remove_if(det_idx.begin(), det_idx.end(),
+                                 [this](int d) { return det_used_[d] != 0; }),
+                  det_idx.end());
+}
+
+void Engine::reidentify(const ct_detection *dets)
+{
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state == CT_TRACK_LOST && tracks_[i].tmpl >= 0 &&
+            tracks_[i].last_update_us != last_us_)
+            pool_tracks_.push_back((int)i);
+    const int n = (int)pool_tracks_.size(), m = (int)pool_dets_.size();
+    if (n == 0 || m == 0)
+        return;
+    const double limit = 1.0 - cfg_.reid_min_similarity + 1e-12;
+    cost_.resize((size_t)n * m);
+    for (int i = 0; i < n; i++) {
+        const Track &t = tracks_[pool_tracks_[i]];
+        const double lost_s = elapsed_s(last_us_, t.last_update_us);
+        // The size the person had when last seen: the coasted one drifts.
+        const double h = std::max<double>(t.seen_h, kMinSide);
+        const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
+        for (int j = 0; j < m; j++) {
+            const ct_detection &d = dets[pool_dets_[j]];
+            double dx = d.left + d.width / 2 - t.cx.x, dy = d.top + d.height / 2 - t.cy.x;
+            double ratio = d.height / h;
+            bool plausible = std::hypot(dx, dy) <= reach && ratio > 0.67 && ratio < 1.5;
+            cost_[(size_t)i * m + j] =
+                plausible ? 1.0 - bank_.similarity(t, pool_dets_[j]) : limit;
+        }
+    }
+    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
+    for (int i = 0; i < n; i++) {
+        int j = row_to_col_[i];
+        if (j < 0)
+            continue;
+        update(tracks_[pool_tracks_[i]], dets[pool_dets_[j]], pool_dets_[j], last_us_);
+        det_used_[pool_dets_[j]] = 1;
+    }
+    pool_dets_.erase(std::remove_if(pool_dets_.begin(), pool_dets_.end(),
+                                    [this](int d) { return det_used_[d] != 0; }),
+                     pool_dets_.end());
+}
+
+void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
+                  size_t n)
+{
+    saved_tracks_ = tracks_;
+    saved_reported_ = reported_;
+    saved_candidates_ = pixels_.candidates();
+    const uint64_t next_id = next_id_;
+    const int64_t last_us = last_us_;
+    const bool has_time = has_time_;
+    const uint64_t runs[3] = {ms_runs_, bank_.ddis_runs, bank_.builds};
+    uint64_t stage_ns[CT_STATS_MAX_STAGES];
+    std::copy(stage_ns_, stage_ns_ + CT_STATS_MAX_STAGES, stage_ns);
+    pixels_.commit(); // the last step's update stands
+    try {
+        step_unguarded(t_us, img, image, dets, n);
+    } catch (...) {
+        // Appearance templates need nothing here: TemplateBank::learn()
+        // builds in slots that the restored tracks do not point to.
+        tracks_ = saved_tracks_;
+        reported_ = saved_reported_;
+        pixels_.candidates() = saved_candidates_;
+        pixels_.rollback();
+        next_id_ = next_id;
+        last_us_ = last_us;
+        has_time_ = has_time;
+        ms_runs_ = runs[0];
+        bank_.ddis_runs = runs[1];
+        bank_.builds = runs[2];
+        std::copy(stage_ns, stage_ns + CT_STATS_MAX_STAGES, stage_ns_);
+        throw;
+    }
+}
+
+void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
+                            const ct_detection *dets, size_t n)
+{
+    const bool pixels = cfg_.mean_shift && !img.empty();
+    appearance_ = cfg_.appearance && !img.empty();
+    const bool first = !has_time_;
+    const double dt = first ? 0.0 : elapsed_s(t_us, last_us_);
+    last_us_ = t_us;
+    has_time_ = true;
+
+    Stopwatch sw;
+    for (Track &t : tracks_)
+        t.predict(dt, cfg_.motion_noise);
+    stage_ns_[CT_STAGE_PREDICT] += sw.lap();
+    pixels_.clear();
+    if (cfg_.source == CT_SOURCE_PIXELS) {
+        pixels_.find(t_us, img, tracks_, stage_ns_);
+        dets = pixels_.dets().data();
+        n = pixels_.dets().size();
+        sw.lap();
+    } else if (cfg_.verify_detections && !img.empty()) {
+        pixels_.verify(t_us, img, tracks_, dets, n, stage_ns_);
+        dets = pixels_.dets().data();
+        sw.lap();
+    }
+    if (pixels) {
+        refine(img);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+    if (appearance_) {
+        bank_.describe(img, dets, n, cfg_.low_score);
+        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
+    }
+
+    det_used_.assign(n, 0);
+    pool_dets_.clear();
+    low_dets_.clear();
+    const float high =
+        cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
+    for (size_t j = 0; j < n; j++) {
+        if (dets[j].score >= high)
+            pool_dets_.push_back((int)j);
+        else if (dets[j].score >= cfg_.low_score)
+            low_dets_.push_back((int)j);
+    }
+
+    // 1. High-score detections against confirmed and lost tracks.
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state != CT_TRACK_TENTATIVE)
+            pool_tracks_.push_back((int)i);
+    match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
+
+    // 2. Low-score detections continue tracks that were confirmed and not
+    //    yet lost: a weak detection near where a person is expected.
+    {
+        size_t k = 0;
+        for (int i : pool_tracks_)
+            if (tracks_[i].state == CT_TRACK_CONFIRMED)
+                pool_tracks_[k++] = i;
+        pool_tracks_.resize(k);
+    }
+    match(pool_tracks_, low_dets_, dets, cfg_.low_match_iou);
+
+    // 3. Tentative tracks against the high-score detections left.
+    pool_tracks_.clear();
+    for (size_t i = 0; i < tracks_.size(); i++)
+        if (tracks_[i].state == CT_TRACK_TENTATIVE)
+            pool_tracks_.push_back((int)i);
+    match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
+
+    // 4. Lost tracks against the high-score detections still left, by
+    //    appearance.
+    if (appearance_)
+        reidentify(dets);
+    stage_ns_[CT_STAGE_ASSOCIATE] += sw.lap();
+    if (pixels) {
+        follow_or_lose(img, t_us);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+
+    age_unmatched(t_us, image);
+    // New tracks from the high-score detections nobody claimed. The first
+    // step confirms them at once: there is no earlier frame to wait for.
+    for (int j : pool_dets_) {
+        if ((int)tracks_.size() >= cfg_.max_tracks)
+            break;
+        start_track(dets[j], j, t_us, first);
+    }
+    stage_ns_[CT_STAGE_LIFECYCLE] += sw.lap();
+    if (pixels) {
+        learn_models(img);
+        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+    if (appearance_) {
+        bank_.learn(tracks_, saved_tracks_, t_us);
+        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
+    }
+
+    report(t_us, image);
+    stage_ns_[CT_STAGE_REPORT] += sw.lap();
+}
+
+void Engine::age_unmatched(int64_t t_us, ImageSize image)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < tracks_.size(); i++) {
+        Track &t = tracks_[i];
+        bool keep = true;
+        if (t.last_update_us != t_us && !t.followed) {
+            if (t.state == CT_TRACK_TENTATIVE) {
+                keep = false;
+            } else {
+                t.state = CT_TRACK_LOST;
+                double since = elapsed_s(t_us, t.last_update_us);
+                Box b = t.box();
+                bool outside = image.known() &&
+                    (b.left >= image.width || b.top >= image.height ||
+                     b.left + b.width <= 0 || b.top + b.height <= 0);
+                keep = since <= cfg_.lost_lifetime && !outside;
+            }
+        }
+        if (keep) {
+            if (k != i) // a track is some 2 KiB (its colour model): move only the ones that move
+                tracks_[k] = t;
+            k++;
+        }
+    }
+    tracks_.resize(k);
+}
+
+size_t Engine::memory_bytes() const
+{
+    return sizeof(*this) + (tracks_.capacity() + saved_tracks_.capacity()) * sizeof(Track) +
+           (reported_.capacity() + saved_reported_.capacity()) * sizeof(ct_track) +
+           saved_candidates_.capacity() * sizeof(ct_candidate) +
+           cost_.capacity() * sizeof(double) +
+           (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
+            low_dets_.capacity()) * sizeof(int) +
+           det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +
+           bank_.memory_bytes() + pixels_.memory_bytes();
+}
+
+void Engine::report(int64_t t_us, ImageSize image)
+{
+    reported_.clear();
+    for (const Track &t : tracks_) {
+        if (t.state == CT_TRACK_TENTATIVE)
+            continue;
+        double since = elapsed_s(t_us, t.last_update_us);
+        if (t.state == CT_TRACK_LOST && since > cfg_.report_lost_time)
+            continue;
+        Box b = t.box();
+        if (cfg_.clip_boxes && image.known()) {
+            double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
+            double x1 = std::min<double>(image.width, b.left + b.width);
+            double y1 = std::min<double>(image.height, b.top + b.height);
+            if (x1 <= x0 || y1 <= y0)
+                continue;
+            b = Box{x0, y0, x1 - x0, y1 - y0};
+        }
+        ct_track o = {};
+        o.id = t.id;
+        o.left = (float)b.left;
+        o.top = (float)b.top;
+        o.width = (float)b.width;
+        o.height = (float)b.height;
+        pixels_.barycenter(b, &o.barycenter_x, &o.barycenter_y);
+        o.velocity_x = (float)t.cx.v;
+        o.velocity_y = (float)t.cy.v;
+        double conf = std::min(1.0, std::max(0.0, (double)t.score));
+        if (t.followed)
+            conf = (double)t.ms.rho / kQ16;
+        else if (t.state == CT_TRACK_LOST && cfg_.lost_lifetime > 0)
+            conf *= std::max(0.0, 1.0 - since / cfg_.lost_lifetime);
+        o.confidence = (float)conf;
+        o.state = t.state;
+        o.age = t.age;
+        o.hits = t.hits;
+        o.time_since_update = since;
+        o.detection_index = t.det_index;
+        o.class_id = t.class_id;
+        reported_.push_back(o);
+    }
+    std::sort(reported_.begin(), reported_.end(),
+              [](const ct_track &a, const ct_track &b) { return a.id < b.id; });
+}
+
+} // namespace ctrack

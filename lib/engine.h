@@ -1,0 +1,107 @@
+// The tracking engine's step: prediction, the candidates of the step,
+// association in passes, mean shift and appearance, track lifecycles and
+// the tracks reported.
+#ifndef CTRACK_ENGINE_H
+#define CTRACK_ENGINE_H
+
+#include <cstdint>
+#include <vector>
+
+#include "ctrack/ctrack.h"
+#include "assign.h"
+#include "candidates.h"
+#include "meanshift.h"
+#include "planes.h"
+#include "templates.h"
+#include "track.h"
+
+namespace ctrack {
+
+class Engine {
+public:
+    explicit Engine(const ct_config &cfg);
+
+    // One step; timestamps are checked by the caller. `img` is empty when
+    // the frame has no pixels. If it throws, the engine is as it was before
+    // the call.
+    void step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
+              size_t n);
+    void reset();
+
+    const std::vector<ct_track> &reported() const { return reported_; }
+    const std::vector<ct_candidate> &candidates() const { return pixels_.candidates(); }
+    size_t live_tracks() const { return tracks_.size(); }
+    uint64_t mean_shift_runs() const { return ms_runs_; }
+    uint64_t ddis_runs() const { return bank_.ddis_runs; }
+    uint64_t template_builds() const { return bank_.builds; }
+    size_t memory_bytes() const;
+    // Nanoseconds spent in each ct_stage, summed over the steps.
+    const uint64_t *stage_ns() const { return stage_ns_; }
+    bool has_time() const { return has_time_; }
+    // This step's cleaned foreground mask at the background model's scale
+    // (Background::kScale), or null when the step had no pixels.
+    const uint8_t *foreground(int *w, int *h) const { return pixels_.foreground(w, h); }
+    int64_t last_time() const { return last_us_; }
+
+private:
+    void step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
+                        const ct_detection *dets, size_t n);
+    // Mean shift from each confirmed track's prediction: where the pixels
+    // say the person is, before the detections are compared.
+    void refine(const Planes &img);
+    // A confirmed track that no detection claimed is carried by mean shift
+    // while the pixels hold it; otherwise it will be lost.
+    void follow_or_lose(const Planes &img, int64_t t_us);
+    // Colour models: made when a track is confirmed, then learnt (eq. 9)
+    // from the boxes that detections confirm, unless another track
+    // overlaps the box or the box no longer looks like the model.
+    void learn_models(const Planes &img);
+    // Lost tracks take back high-score detections that nobody claimed and
+    // that look like them (DDIS), near where they were heading: a person
+    // who reappears after an occlusion keeps their id.
+    void reidentify(const ct_detection *dets);
+    // Matches tracks_[track_idx] to dets[det_idx] by IoU with the gate
+    // min_iou (and appearance, when on), updates the matched tracks, and
+    // leaves only the unmatched in both lists.
+    void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+               const ct_detection *dets, double min_iou);
+    void update(Track &t, const ct_detection &d, int index, int64_t t_us);
+    void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
+    // Tracks no detection updated: lost, or removed when tentative, past
+    // their lifetime or outside the image.
+    void age_unmatched(int64_t t_us, ImageSize image);
+    void report(int64_t t_us, ImageSize image);
+
+    uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
+    uint64_t ms_runs_ = 0;
+    ct_config cfg_;
+    std::vector<Track> tracks_;
+    std::vector<ct_track> reported_;
+    uint64_t next_id_ = 1;
+    int64_t last_us_ = 0;
+    bool has_time_ = false;
+
+    // The state before the step in progress, restored if it throws (the
+    // restoring copy fits in capacity the vectors already have, so it cannot
+    // throw). Kept as members so that steady state does not allocate.
+    std::vector<Track> saved_tracks_;
+    std::vector<ct_track> saved_reported_;
+    std::vector<ct_candidate> saved_candidates_;
+
+    MeanShift ms_;
+    MeanShiftParams ms_params_;
+    int min_rho_ = 0;         // mean_shift_min_similarity in Q16
+    bool appearance_ = false; // this step
+    TemplateBank bank_;
+    PixelCandidates pixels_;
+
+    // Association's scratch, reused from step to step.
+    Assigner assigner_;
+    std::vector<double> cost_;
+    std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
+    std::vector<char> det_used_;
+};
+
+} // namespace ctrack
+
+#endif

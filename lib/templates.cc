@@ -1,0 +1,75 @@
+#include "templates.h"
+
+#include "clock.h"
+
+namespace ctrack {
+
+namespace {
+
+// A track's appearance template is remade from its detection at most this
+// often (seconds), when nothing occludes it.
+constexpr double kTemplateRefresh = 0.5;
+
+constexpr size_t kDescFloats = (size_t)kPoints * kDescDim;
+
+} // namespace
+
+void TemplateBank::describe(const Planes &img, const ct_detection *dets, size_t n,
+                            float low_score)
+{
+    det_desc_.resize(n * kDescFloats);
+    for (size_t j = 0; j < n; j++)
+        if (dets[j].score >= low_score)
+            ctrack::describe(img, dets[j].left, dets[j].top, dets[j].width, dets[j].height,
+                             &det_desc_[j * kDescFloats]);
+}
+
+double TemplateBank::similarity(const Track &t, int det)
+{
+    if (t.tmpl < 0)
+        return 1.0;
+    ddis_runs++;
+    return ddis_.ddis(templates_[t.tmpl], &det_desc_[(size_t)det * kDescFloats]);
+}
+
+void TemplateBank::learn(std::vector<Track> &tracks, const std::vector<Track> &saved,
+                         int64_t t_us)
+{
+    slot_used_.assign(templates_.size(), 0);
+    const std::vector<Track> *const both[] = {&tracks, &saved};
+    for (const std::vector<Track> *v : both)
+        for (const Track &t : *v)
+            if (t.tmpl >= 0)
+                slot_used_[t.tmpl] = 1;
+    size_t slot = 0;
+    for (size_t i = 0; i < tracks.size(); i++) {
+        Track &t = tracks[i];
+        if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0 || t.last_update_us != t_us)
+            continue;
+        if (t.tmpl >= 0 &&
+            (elapsed_s(t_us, t.tmpl_us) < kTemplateRefresh || occluded(tracks, i)))
+            continue;
+        while (slot < slot_used_.size() && slot_used_[slot])
+            slot++;
+        if (slot == templates_.size()) {
+            templates_.emplace_back();
+            slot_used_.push_back(0);
+        }
+        templates_[slot].build(&det_desc_[(size_t)t.det_index * kDescFloats]);
+        slot_used_[slot] = 1;
+        t.tmpl = (int)slot;
+        t.tmpl_us = t_us;
+        builds++;
+    }
+}
+
+size_t TemplateBank::memory_bytes() const
+{
+    size_t b = templates_.capacity() * sizeof(Template) + slot_used_.capacity() +
+               det_desc_.capacity() * sizeof(float);
+    for (const Template &tp : templates_)
+        b += tp.desc.capacity() * sizeof(float) + tp.index.memory_bytes();
+    return b;
+}
+
+} // namespace ctrack

@@ -1,0 +1,45 @@
+// The tracks' appearance templates, kept in slots, and this step's
+// descriptors of the detections: what DDIS compares in association and
+// re-identification.
+#ifndef CTRACK_TEMPLATES_H
+#define CTRACK_TEMPLATES_H
+
+#include <cstdint>
+#include <vector>
+
+#include "appearance.h"
+#include "planes.h"
+#include "track.h"
+
+namespace ctrack {
+
+class TemplateBank {
+public:
+    // Each detection's descriptors, once a step (those scoring under
+    // low_score are never compared, and are left undescribed).
+    void describe(const Planes &img, const ct_detection *dets, size_t n, float low_score);
+    // DDIS of this step's detection det against the track's template; a
+    // track without one looks like anything (1).
+    double similarity(const Track &t, int det);
+    // Templates: made when a track is confirmed, remade from its detection
+    // at most every half second while nothing occludes it. A template is
+    // built in a slot that no track points to, in `tracks` or in `saved`
+    // (the tracks as they were before the step, which a failed step
+    // restores), and only then does the track take it: a failed step leaves
+    // every restored track's template untouched.
+    void learn(std::vector<Track> &tracks, const std::vector<Track> &saved, int64_t t_us);
+    size_t memory_bytes() const;
+
+    // DDIS evaluations and template builds, for ct_stats.
+    uint64_t ddis_runs = 0, builds = 0;
+
+private:
+    std::vector<Template> templates_;
+    std::vector<char> slot_used_;
+    std::vector<float> det_desc_;
+    Ddis ddis_;
+};
+
+} // namespace ctrack
+
+#endif
