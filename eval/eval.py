@@ -320,19 +320,19 @@ NOTES = """## Notes
   score 0.5). "detections + pixels": the same with the frames (ct-track reading
   the Y4M): each confirmed track keeps a colour model, multiscale mean shift refines
   its predicted box before association and follows it through missing detections
-  (docs/meanshift.md). "pixels": no detections at all; ctrack finds people with
-  its background model and contour template (docs/pixels.md), like the MOG2
+  (docs/notes/meanshift.md). "pixels": no detections at all; ctrack finds people with
+  its background model and contour template (docs/notes/pixels.md), like the MOG2
   baseline.
 - **Ablations.** "mean shift off" is the same run with `mean_shift=0` and every
   other parameter equal, the lost-track lifetime and the reporting of lost tracks
   included: what mean shift adds comes from following the pixels, not from
   coasting longer. "DDIS off" is the same run with `appearance=0`: no appearance
   term in the association cost and no re-identification of lost tracks, the
-  lost-track lifetime unchanged (docs/appearance.md).
+  lost-track lifetime unchanged (docs/notes/appearance.md).
 - **Verified detections.** The "detections + pixels" run with
   `verify_detections=1`: the contour template votes on the foreground inside
   each detection's box, and a detection it rejects can no longer start a track
-  (docs/pixels.md). An option, off by default.
+  (docs/notes/pixels.md). An option, off by default.
 - **Peers.** ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
   to the sequence's); SORT and OC-SORT as Roboflow's trackers 2.6.1 ships them
   (defaults, `frame_rate` set to the sequence's; boxes reported once a track is
@@ -352,7 +352,7 @@ NOTES = """## Notes
   the distance between the track's and the ground truth's box centres divided by the
   ground-truth box height.
 - **Feature recognition accuracy** (the paper's third measure) is in
-  docs/recognition.md (`eval/recognition.py`).
+  docs/notes/recognition.md (`eval/recognition.py`).
 """
 
 

@@ -34,7 +34,7 @@ and tests/data/blobs/labelled.bin: the masks of held-out blobs (every
 negative of PETS09-S2L1 frames 401-795 and of TUD-Campus, and as many
 positives drawn at random with a fixed seed) for the contour template's unit
 test, taken by eval/dump-blobs from the same run. With --report it rewrites
-docs/recognition.md. The blobs depend on the thresholds (through tracking and
+docs/notes/recognition.md. The blobs depend on the thresholds (through tracking and
 the merging of fragments), so after --write: make, then --report.
 """
 import argparse
@@ -88,8 +88,18 @@ def blob_masks(build, seq, cands):
     return out
 
 
+# What made the file, in its first lines (each starts with '#', which no
+# record's first byte is).
+BLOBS_HEADER = (
+    "# tests/data/blobs/labelled.bin, written by `eval/recognition.py BUILD --write`\n"
+    "# from the pixels-only blobs (eval/dump-blobs) of PETS09-S2L1 frames 401-795\n"
+    "# (scripts/fetch-pets09.sh) and TUD-Campus (tests/data/mot15/TUD-Campus/video.mp4),\n"
+    "# labelled against their gt/gt.txt. After these lines, records: int32 label,\n"
+    "# sequence, frame, width, height (little-endian), then the mask, 1 bit a pixel.\n")
+
+
 def write_test_blobs(build, sets):
-    """tests/data/blobs/labelled.bin: records of little-endian int32 label (1
+    """tests/data/blobs/labelled.bin: BLOBS_HEADER, then records of little-endian int32 label (1
     person, 0 not), sequence (0 PETS09-S2L1, 1 TUD-Campus), frame, width,
     height, then the mask, one bit a pixel, rows in order, most significant
     bit first (numpy.packbits of the flattened mask)."""
@@ -111,6 +121,7 @@ def write_test_blobs(build, sets):
     d = os.path.join(TOP, "tests", "data", "blobs")
     os.makedirs(d, exist_ok=True)
     with open(os.path.join(d, "labelled.bin"), "wb") as f:
+        f.write(BLOBS_HEADER.encode())
         f.write(bytes(out))
     for seq, p, n in counts:
         print("test blobs: %s %d positives, %d negatives" % (seq, p, n))
@@ -358,7 +369,7 @@ def main():
     ap.add_argument("build")
     ap.add_argument("--write", action="store_true",
                     help="rewrite lib/classifier_params.inc and tests/data/blobs/labelled.bin")
-    ap.add_argument("--report", action="store_true", help="rewrite docs/recognition.md")
+    ap.add_argument("--report", action="store_true", help="rewrite docs/notes/recognition.md")
     a = ap.parse_args()
     sets = {}
     for seq in ("PETS09-S2L1", "TUD-Campus"):
@@ -449,7 +460,7 @@ def main():
         a.build, sets, {seq: regions_vote[seq] & (sets[seq][0][:, 17] <= shipped_fill) &
                         (sets[seq][0][:, 18] > max_top) for seq in sets}, 18,
         os.path.join(TOP, "docs", "img", "recognition-top.png"))
-    with open(os.path.join(TOP, "docs", "recognition.md"), "w") as f:
+    with open(os.path.join(TOP, "docs", "notes", "recognition.md"), "w") as f:
         f.write(RECOGNITION_HEAD % datetime.date.today().isoformat())
         f.write("| set | positives | negatives | left out | region vote: balanced accuracy "
                 "(TPR / TNR) | size and aspect filter | region vote, blobs at the image's "
@@ -529,7 +540,7 @@ corner, whose blobs were once counted as negatives). Balanced accuracy is the
 mean of the true positive and true negative rates. A blob is a pedestrian
 when more than half of the regions that vote say yes, it fills no more of
 its convex hull than a walking person does, and its top is narrower than its
-body (0.7.0: a person has a head; docs/pixels.md); the column "regions
+body (0.7.0: a person has a head; docs/notes/pixels.md); the column "regions
 alone" leaves both shape tests out, the column "without the top's test"
 the last.
 
@@ -588,7 +599,7 @@ hull (orange), so the vote turns them down: up to 12 from PETS09-S2L1 frames
 a person, red on no one, grey when the blob is left out of the accuracy;
 the number is the fill.
 
-![rejected for their fill](img/recognition-fill.png)
+![rejected for their fill](../img/recognition-fill.png)
 """
 
 RECOGNITION_TOP_PICTURE = """
@@ -598,7 +609,7 @@ them down (0.7.0): up to 12 from PETS09-S2L1 frames 401-795, then up to 12
 from TUD-Campus, framed as above; the number is the top's width over the
 body's.
 
-![rejected for their top](img/recognition-top.png)
+![rejected for their top](../img/recognition-top.png)
 """
 
 RECOGNITION_PICTURE = """
@@ -608,7 +619,7 @@ Look at them before reading the accuracy as the classifier's alone: many are
 people the ground truth lacks, near the edges of the image or by the parked
 cars.
 
-![false positives](img/recognition-false-positives.jpg)
+![false positives](../img/recognition-false-positives.jpg)
 """
 
 

@@ -21,8 +21,8 @@ constexpr int kVMin = 25, kVMax = 80;
 // time, not in frames: a 7 frames/s camera starts as a 25 frames/s one does.
 // At 25 frames/s it is 12 frames of 8 levels (the bound falls between two
 // frames, so that a timestamp's jitter does not add one). Counted in
-// frames, PETS09-S2L1 (7 frames/s) kept its model fast for 1.7 s and learnt
-// people who had just come in (docs/tuning.md).
+// frames, a slow camera would keep its model fast for seconds and learn
+// people who had just come in (docs/notes/pixels.md).
 constexpr int64_t kWarmupUs = 460000;
 constexpr int kWarmupRate = 200;
 // The first frame has no interval behind it: it counts as one of 25
@@ -200,19 +200,18 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     last_us_ = t_us;
     // While warming up, V moves as fast as M, and also where M has reached
     // the image: else V stays near kVMax, where it starts, for some 50
-    // frames, and hides people with the background's contrast (TUD-Campus,
-    // pixels only: recall 15% -> 39%, MOTA -3 -> 20).
+    // frames, and hides people with the background's contrast
+    // (docs/notes/pixels.md).
     const Rates rates{step, warm};
     const int cs = kScale / 2; // working pixel to chroma sample
     // Locals and restrict pointers: stores through uint8_t pointers may
     // alias anything, and would make the compiler reload every member after
-    // each one (the loop ran at about 100 instructions a pixel).
+    // each one.
     const bool color = color_;
     const int w = w_, h = h_;
     const size_t cstep = (size_t)cs * img.c_step;
     // Each row's samples are gathered first into contiguous buffers, so that
-    // the loop below reads unit-stride arrays, kLanes pixels at a time (the
-    // model took 0.8 ms a frame at 768x576 one pixel at a time, 0.3 ms so).
+    // the loop below reads unit-stride arrays, kLanes pixels at a time.
     line_y_.resize(w);
     line_u_.resize(w);
     line_v_.resize(w);

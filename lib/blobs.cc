@@ -21,9 +21,8 @@ constexpr double kFarMergeGap = 1.0;  // with the contour template's consent
 // in the ground truth), side by side.
 constexpr double kMinCentreGap = 0.2;
 // Between two heads on a blob's top edge, the edge dips at least this many
-// blob heights below both (a head is about 0.13 of a person's height; 0.06
-// to 0.1 score alike, 0.06 was best on PETS09-S2L1 frames 1-400:
-// docs/tuning.md).
+// blob heights below both (a head is about 0.13 of a person's height;
+// docs/tuning.md has the choice).
 constexpr double kHeadDip = 0.06;
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
@@ -87,9 +86,8 @@ void BlobFinder::clean(const uint8_t *mask, int w, int h)
     Impl &m = *impl_;
     const cv::Mat in(h, w, CV_8UC1, const_cast<uint8_t *>(mask), (size_t)w);
     // Closing only: an opening, even 3 x 3, erases legs a few working
-    // pixels wide, and the boxes lose them (blobs matching a person at IoU
-    // >= 0.5 fell from 69% to 57% on PETS09-S2L1). Specks are dropped by
-    // area in find().
+    // pixels wide, and the boxes lose them (docs/notes/pixels.md). Specks
+    // are dropped by area in find().
     cv::morphologyEx(in, m.clean, cv::MORPH_CLOSE, m.close_k);
 }
 

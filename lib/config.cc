@@ -8,9 +8,8 @@
 
 namespace ctrack {
 
-// The defaults were chosen on the MOTChallenge public detections of
-// PETS09-S2L1 and TUD-Campus together (docs/tuning.md): one set for every
-// sequence.
+// One set of defaults for every sequence; docs/tuning.md shows how each
+// was chosen.
 ct_config default_config()
 {
     ct_config c = {};

@@ -18,7 +18,7 @@ constexpr uint32_t kQ16 = 65536;
 // About this many samples a window, at least: the sampling step is
 // floor(sqrt(ellipse area / kTargetSamples)), so a window of fewer than four
 // times this many pixels reads them all, and every window reads at most
-// four times this many. It sets the cost: see docs/meanshift.md.
+// four times this many. It sets the cost: see docs/notes/meanshift.md.
 constexpr double kTargetSamples = 300;
 // The rings around a window (background weighting, scale) likewise.
 constexpr double kTargetRingSamples = 300;

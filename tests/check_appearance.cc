@@ -220,7 +220,7 @@ END_TEST
 
 // DDIS and DIS (eq. 3, the same neighbours without the deformation term):
 // DDIS never exceeds DIS (each of its terms is at most what DIS counts, so it
-// falls at least as fast when a person deforms: see docs/appearance.md), but
+// falls at least as fast when a person deforms: see docs/notes/appearance.md), but
 // it tells the same, deformed person from another one by a wider margin.
 START_TEST(against_dis)
 {

@@ -475,7 +475,7 @@ END_TEST
 // hull (a ring's hole counts as filled), and the classifier rejects it even
 // where the regions alone would vote for it (a frontal torso is box-like,
 // and six of the nine regions hold torso rows; the ring's inner edge gives
-// every region outline points to match). docs/pixels.md lists the shapes
+// every region outline points to match). docs/notes/pixels.md lists the shapes
 // that still pass.
 START_TEST(hull_filling_non_human_shapes_are_rejected)
 {
@@ -504,7 +504,7 @@ START_TEST(hull_filling_non_human_shapes_are_rejected)
 END_TEST
 
 // Concave shapes with a person's aspect that no person has: their tops are
-// as wide as their bodies, where a person has a head (docs/pixels.md), so
+// as wide as their bodies, where a person has a head (docs/notes/pixels.md), so
 // the classifier rejects them even where the regions alone vote for them
 // (T, H, Π, X and Y won 8 or 9 of 9 regions before 0.7.0). A walking person,
 // the same person with arms held out, and a person seen from the side
@@ -606,6 +606,13 @@ std::vector<RealBlob> real_blobs()
     FILE *f = std::fopen(path.c_str(), "rb");
     ck_assert_msg(f != nullptr, "cannot open %s", path.c_str());
     std::vector<RealBlob> out;
+    // The first lines, each starting with '#', say what made the file.
+    int c;
+    while ((c = std::fgetc(f)) == '#')
+        while ((c = std::fgetc(f)) != '\n' && c != EOF) {
+        }
+    if (c != EOF)
+        std::ungetc(c, f);
     int32_t head[5];
     while (std::fread(head, sizeof head, 1, f) == 1) {
         RealBlob b{head[0], head[1], head[2], head[3], head[4], {}};
@@ -625,7 +632,7 @@ std::vector<RealBlob> real_blobs()
 
 // The classifier on real blobs it was not tuned on (PETS09-S2L1 frames
 // 401-795 and TUD-Campus): people's blobs accepted, blobs on no one
-// rejected, at the rates docs/recognition.md reports less a margin.
+// rejected, at the rates docs/notes/recognition.md reports less a margin.
 // Accepting everything or nothing, or a vote that ignores the shape, fails.
 START_TEST(real_blobs_are_classified)
 {

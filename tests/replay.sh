@@ -42,7 +42,7 @@ pets=$("$here/../scripts/fetch-pets09.sh")
 check "PETS09-S2L1, detections + pixels" PETS09-S2L1 68.5 74.5 DETS "$pets"
 check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 68.0 73.0 \
     DETS -p verify_detections=1 "$pets"
-# From the pixels alone (docs/pixels.md): no detections.
+# From the pixels alone (docs/notes/pixels.md): no detections.
 check "PETS09-S2L1, pixels only" PETS09-S2L1 64.5 75.0 -r 7 "$pets"
 check "TUD-Campus, pixels only" TUD-Campus 26.5 49.5 -r 25 "$tmp/tud.y4m"
 exit $fail

@@ -84,8 +84,8 @@ typedef enum ct_source {
     /* The host's detections given to ct_tracker_feed(). A feed with n == 0
      * means "the detector ran and found nobody". The default. */
     CT_SOURCE_DETECTIONS = 0,
-    /* The pixels (0.4.0): a background model finds moving blobs and the
-     * contour template scores how pedestrian-like each is; the host gives no
+    /* The pixels: a background model finds moving blobs and the contour
+     * template scores how pedestrian-like each is; the host gives no
      * detections (n must be 0). */
     CT_SOURCE_PIXELS = 1
 } ct_source;
@@ -206,9 +206,9 @@ typedef enum ct_format {
     CT_FORMAT_I420 = 0x30323449,                /* 'I420': Y, U, V planes */
     CT_FORMAT_NV12 = 0x3231564E,                /* 'NV12': Y, interleaved UV */
     CT_FORMAT_GRAY8 = 0x30303859,               /* 'Y800': Y only */
-    /* Packed 8-bit colour, one plane (0.8.0): the library converts it to
-     * I420 planes of its own (BT.601, limited range, chroma the mean of
-     * each 2x2 block) before it reads the pixels. */
+    /* Packed 8-bit colour, one plane: the library converts it to I420
+     * planes of its own (BT.601, limited range, chroma the mean of each 2x2
+     * block) before it reads the pixels. */
     CT_FORMAT_BGR24 = 0x47423432,               /* '24BG': B, G, R bytes (OpenCV's order) */
     CT_FORMAT_RGB24 = 0x20776172                /* 'raw ': R, G, B bytes */
 } ct_format;
@@ -230,7 +230,7 @@ typedef struct ct_frame {
     /* Capture time in microseconds; must increase from one feed to the
      * next. Motion is predicted from it, so dropped frames and variable
      * frame rates are handled; with pixels, the background model's start
-     * (its first 0.46 s) is timed by it as well (0.6.2). */
+     * (its first 0.46 s) is timed by it as well. */
     int64_t timestamp_us;
 } ct_frame;
 
@@ -300,9 +300,8 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
 /* ------------------------------------------------------------------------ */
-/* Candidates found in the pixels (source CT_SOURCE_PIXELS), 0.4.0, or the
- * external detections as the contour template voted on them
- * (verify_detections, 0.5.0). */
+/* Candidates found in the pixels (source CT_SOURCE_PIXELS), or the external
+ * detections as the contour template voted on them (verify_detections). */
 
 #define CT_REGIONS 9
 
@@ -310,9 +309,9 @@ typedef struct ct_candidate {
     float left, top, width, height; /* pixels */
     /* The contour template's vote: yes votes over voting regions (0 with
      * fewer than 5 voters; at most 0.5, not a pedestrian, when the blob
-     * fills more of its convex hull than a walking person does, 0.6.0, or
-     * its top is as wide as its body, 0.7.0: see top_width);
-     * candidates feed the tracker with this score. */
+     * fills more of its convex hull than a walking person does, see fill,
+     * or its top is as wide as its body, see top_width); candidates feed
+     * the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,
@@ -320,21 +319,26 @@ typedef struct ct_candidate {
      * box heights, between the blob's contour and the best silhouette's; -1
      * where the region abstained (occluded or out of the frame). */
     float region_distance[CT_REGIONS];
-    /* How much of its convex hull the blob fills, 0 to 1 (0.6.0; from
-     * 0.6.1 the area inside its outer contour, holes included): a walking
+
+    /* Added in 0.6.0: callers built against an older header pass a smaller
+     * element size and get the fields above. */
+
+    /* How much of its convex hull the blob fills, 0 to 1: the area inside
+     * its outer contour (holes included) over the hull's. A walking
      * person's outline is concave at the neck, under the arms and between
-     * the legs. Read it only with a 0.6.0 or newer header:
-     * a caller built against an older one passes the smaller size and gets
-     * the fields above. */
+     * the legs. */
     float fill;
-    /* How wide the blob's top is against its body (0.7.0): the median width
-     * of the head's rows (the top eighth of the box; an empty row counts 0)
-     * over the widest row from the shoulders (11/64 of the box's height
-     * down) to the feet; 0 when fewer than half the rows from the shoulders
-     * to the hips hold foreground. About 0.15
-     * for a person, whose head is narrower than their shoulders, arms or
-     * legs in stride; 1 or more for a T, an H, a Y. Above 0.9 the score is
-     * at most 0.5, as for a blob that fills its hull. */
+
+    /* Added in 0.7.0. */
+
+    /* How wide the blob's top is against its body: the median width of the
+     * head's rows (the top eighth of the box; an empty row counts 0) over
+     * the widest row from the shoulders (11/64 of the box's height down) to
+     * the feet; 0 when fewer than half the rows from the shoulders to the
+     * hips hold foreground. About 0.15 for a person, whose head is narrower
+     * than their shoulders, arms or legs in stride; 1 or more for a T, an
+     * H, a Y. Above 0.9 the score is at most 0.5, as for a blob that fills
+     * its hull. */
     float top_width;
 } ct_candidate;
 
@@ -356,12 +360,12 @@ typedef enum ct_stage {
     CT_STAGE_ASSOCIATE = 2, /* costs and assignment */
     CT_STAGE_LIFECYCLE = 3, /* updates, losses, removals, births */
     CT_STAGE_REPORT = 4,    /* building the reported tracks */
-    CT_STAGE_MEAN_SHIFT = 5, /* colour models and mean shift (0.2.0) */
-    CT_STAGE_APPEARANCE = 6, /* descriptors, DDIS, templates (0.3.0) */
-    CT_STAGE_BACKGROUND = 7, /* background model, foreground mask (0.4.0) */
+    CT_STAGE_MEAN_SHIFT = 5, /* colour models and mean shift */
+    CT_STAGE_APPEARANCE = 6, /* descriptors, DDIS, templates */
+    CT_STAGE_BACKGROUND = 7, /* background model, foreground mask */
     CT_STAGE_BLOBS = 8,      /* morphology, contours, merges and splits */
     CT_STAGE_CLASSIFY = 9,   /* contour template and region votes */
-    CT_STAGE_CONVERT = 10    /* packed BGR24 / RGB24 to planes (0.8.0) */
+    CT_STAGE_CONVERT = 10    /* packed BGR24 / RGB24 to planes */
 } ct_stage;
 
 #define CT_STATS_MAX_STAGES 16
