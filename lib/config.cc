@@ -63,6 +63,11 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
                     "config.size: %zu is smaller than any ct_config (%zu); "
                     "fill it with ct_config_default()",
                     in->size, kConfigSizeV1);
+    case SizedResult::too_large:
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.size: %zu is larger than any ct_config can be (%zu): not set, or "
+                    "overwritten?",
+                    in->size, kMaxStructSize);
     case SizedResult::unknown_fields:
         return fail(msg, msg_len, CT_ERROR_UNSUPPORTED,
                     "config.size: %zu bytes, of which this library (ctrack %s) knows %zu; "

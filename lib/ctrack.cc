@@ -11,6 +11,9 @@
 
 #include "clock.h"
 #include "config.h"
+#include "convert.h"
+#include "cpu.h"
+#include "dsp.h"
 #include "error.h"
 #include "frame.h"
 #include "sized.h"
@@ -20,9 +23,14 @@
 #define CT_STR(x) CT_STR2(x)
 
 struct ct_tracker {
-    explicit ct_tracker(const ct_config &cfg) : engine(cfg), source(cfg.source) {}
+    explicit ct_tracker(const ct_config &cfg) : engine(cfg), source(cfg.source)
+    {
+        ctrack::dsp_init(&dsp, ctrack::cpu_flags());
+    }
     ctrack::Engine engine;
     int source;
+    // The pixel kernels for this CPU, chosen when the tracker is made.
+    ctrack::Dsp dsp;
     uint64_t steps = 0, feed_ns = 0, validate_ns = 0, convert_ns = 0;
     // A packed colour frame's planes, made by the library (CT_FORMAT_BGR24,
     // CT_FORMAT_RGB24): kept from one feed to the next, so that a steady
@@ -70,7 +78,7 @@ int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char 
     if (!count)
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
     *count = 0;
-    if (elem_size < min_size || elem_size > (1u << 16)) {
+    if (elem_size < min_size || elem_size > ctrack::kMaxStructSize) {
         if (min_size == sizeof(T)) // never grown
             return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                                 "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
@@ -202,7 +210,7 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     st = guarded(tracker, [&] {
         ctrack::Planes planes;
         if (ctrack::packed_rgb(f.format)) {
-            planes = ctrack::packed_to_i420(f, &tracker->converted);
+            planes = ctrack::packed_to_i420(f, tracker->dsp, &tracker->converted);
             convert_ns = sw.lap();
         } else {
             planes = ctrack::Planes::of(f);
@@ -269,7 +277,7 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
                             "stats: NULL pointer");
     // The first published ct_stats (0.1.0) ended with memory_bytes.
     const size_t size = stats->size, v1 = offsetof(ct_stats, mean_shift_runs);
-    if (size < v1 || size > (1u << 16))
+    if (size < v1 || size > ctrack::kMaxStructSize)
         return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
                             "stats.size: %zu is not sizeof(ct_stats) (%zu, or %zu from an "
                             "older header, or more from a newer one)",

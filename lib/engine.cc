@@ -113,35 +113,31 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
     if (n == 0 || m == 0)
         return;
     // Cost: 1 - IoU, plus appearance_weight (1 - DDIS) with appearance. A
-    // pair is allowed only when its IoU reaches min_iou (the tiny slack lets
-    // an IoU exactly at the gate through), whatever it looks like.
+    // pair is allowed only when its IoU reaches min_iou, whatever it looks
+    // like.
     const double w = appearance_ ? cfg_.appearance_weight : 0.0;
     const double limit = 1.0 - min_iou + w + 1e-12;
-    cost_.resize((size_t)n * m);
+    gate_.index(dets, det_idx);
+    pairs_.clear();
+    for (int i = 0; i < n; i++)
+        gate_.overlapping(i, tracks_[(size_t)track_idx[(size_t)i]].cue, min_iou, pairs_);
+    if (w > 0)
+        for (Pair &p : pairs_)
+            p.cost += w * (1.0 - bank_.similarity(tracks_[(size_t)track_idx[(size_t)p.row]],
+                                                   det_idx[(size_t)p.col]));
+    assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
-        const Track &t = tracks_[track_idx[i]];
-        for (int j = 0; j < m; j++) {
-            double o = iou(t.cue, det_box(dets[det_idx[j]]));
-            double c = 1.0 - o;
-            if (o + 1e-12 < min_iou)
-                c = limit; // not allowed
-            else if (w > 0)
-                c += w * (1.0 - bank_.similarity(t, det_idx[j]));
-            cost_[(size_t)i * m + j] = c;
-        }
-    }
-    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
-    for (int i = 0; i < n; i++) {
-        int j = row_to_col_[i];
+        const int j = row_to_col_[(size_t)i];
         if (j < 0)
             continue;
-        det_used_[det_idx[j]] = 1;
-        update(tracks_[track_idx[i]], dets[det_idx[j]], det_idx[j], last_us_);
-        track_idx[i] = -1;
+        const int d = det_idx[(size_t)j];
+        det_used_[(size_t)d] = 1;
+        update(tracks_[(size_t)track_idx[(size_t)i]], dets[d], d, last_us_);
+        track_idx[(size_t)i] = -1;
     }
     track_idx.erase(std::remove(track_idx.begin(), track_idx.end(), -1), track_idx.end());
     det_idx.erase(std::remove_if(det_idx.begin(), det_idx.end(),
-                                 [this](int d) { return det_used_[d] != 0; }),
+                                 [this](int d) { return det_used_[(size_t)d] != 0; }),
                   det_idx.end());
 }
 
@@ -156,32 +152,38 @@ void Engine::reidentify(const ct_detection *dets)
     if (n == 0 || m == 0)
         return;
     const double limit = 1.0 - cfg_.reid_min_similarity + 1e-12;
-    cost_.resize((size_t)n * m);
+    gate_.index(dets, pool_dets_);
+    pairs_.clear();
     for (int i = 0; i < n; i++) {
-        const Track &t = tracks_[pool_tracks_[i]];
+        const Track &t = tracks_[(size_t)pool_tracks_[(size_t)i]];
         const double lost_s = elapsed_s(last_us_, t.last_update_us);
         // The size the person had when last seen: the coasted one drifts.
         const double h = std::max<double>(t.seen_h, kMinSide);
         const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
-        for (int j = 0; j < m; j++) {
-            const ct_detection &d = dets[pool_dets_[j]];
-            double dx = d.left + d.width / 2 - t.cx.x, dy = d.top + d.height / 2 - t.cy.x;
-            double ratio = d.height / h;
-            bool plausible = std::hypot(dx, dy) <= reach && ratio > 0.67 && ratio < 1.5;
-            cost_[(size_t)i * m + j] =
-                plausible ? 1.0 - bank_.similarity(t, pool_dets_[j]) : limit;
+        const size_t first = pairs_.size();
+        gate_.near(i, t.cx.x, t.cy.x, reach, h, pairs_);
+        // Nearness only gates: the cost is how unlike the track each looks,
+        // and a pair as unlike as the limit is no pair.
+        size_t kept = first;
+        for (size_t k = first; k < pairs_.size(); k++) {
+            Pair p = pairs_[k];
+            p.cost = 1.0 - bank_.similarity(t, pool_dets_[(size_t)p.col]);
+            if (p.cost < limit)
+                pairs_[kept++] = p;
         }
+        pairs_.resize(kept);
     }
-    assigner_.solve(cost_.data(), n, m, limit, row_to_col_);
+    assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
-        int j = row_to_col_[i];
+        const int j = row_to_col_[(size_t)i];
         if (j < 0)
             continue;
-        update(tracks_[pool_tracks_[i]], dets[pool_dets_[j]], pool_dets_[j], last_us_);
-        det_used_[pool_dets_[j]] = 1;
+        const int d = pool_dets_[(size_t)j];
+        update(tracks_[(size_t)pool_tracks_[(size_t)i]], dets[d], d, last_us_);
+        det_used_[(size_t)d] = 1;
     }
     pool_dets_.erase(std::remove_if(pool_dets_.begin(), pool_dets_.end(),
-                                    [this](int d) { return det_used_[d] != 0; }),
+                                    [this](int d) { return det_used_[(size_t)d] != 0; }),
                      pool_dets_.end());
 }
 
@@ -247,10 +249,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         refine(img);
         stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
     }
-    if (appearance_) {
-        bank_.describe(img, dets, n, cfg_.low_score);
-        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
-    }
+    if (appearance_)
+        bank_.begin(img, dets, n);
 
     det_used_.assign(n, 0);
     pool_dets_.clear();
@@ -354,7 +354,7 @@ size_t Engine::memory_bytes() const
     return sizeof(*this) + (tracks_.capacity() + saved_tracks_.capacity()) * sizeof(Track) +
            (reported_.capacity() + saved_reported_.capacity()) * sizeof(ct_track) +
            saved_candidates_.capacity() * sizeof(ct_candidate) +
-           cost_.capacity() * sizeof(double) +
+           pairs_.capacity() * sizeof(Pair) + gate_.memory_bytes() +
            (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
             low_dets_.capacity()) * sizeof(int) +
            det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +

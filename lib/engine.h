@@ -10,6 +10,7 @@
 #include "ctrack/ctrack.h"
 #include "assign.h"
 #include "candidates.h"
+#include "gate.h"
 #include "meanshift.h"
 #include "planes.h"
 #include "templates.h"
@@ -96,8 +97,9 @@ private:
     PixelCandidates pixels_;
 
     // Association's scratch, reused from step to step.
+    Gate gate_;
+    std::vector<Pair> pairs_;
     Assigner assigner_;
-    std::vector<double> cost_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;
 };

@@ -28,10 +28,6 @@ inline bool packed_rgb(uint32_t format)
     return format == CT_FORMAT_BGR24 || format == CT_FORMAT_RGB24;
 }
 
-// A loaded BGR24 or RGB24 frame converted to I420 planes in buf (resized to
-// fit, and working rows after them; the planes point into it).
-Planes packed_to_i420(const ct_frame &f, std::vector<int16_t> *buf);
-
 // Checks n detections: finite boxes of positive size, finite scores.
 int check_detections(const ct_detection *dets, size_t n, char *msg, size_t msg_len);
 

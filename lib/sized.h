@@ -8,18 +8,25 @@
 
 namespace ctrack {
 
-enum class SizedResult { ok, too_small, unknown_fields };
+enum class SizedResult { ok, too_small, too_large, unknown_fields };
+
+// The largest size a caller's struct may claim: no ctrack struct will grow
+// past it, so a larger size is garbage (reading that far would run past
+// the caller's memory). copy_out() caps element sizes the same way.
+constexpr size_t kMaxStructSize = 1u << 16;
 
 // Copies the `caller_size` bytes the caller's struct has over `out` (which
 // holds the defaults). A caller's struct smaller than `min_size` (the first
-// published version) is refused; a larger one, from a newer header, is
-// accepted only if the fields this library does not know are all zero, that
-// is, left at their defaults.
+// published version), or larger than kMaxStructSize, is refused; one larger
+// than this library's, from a newer header, is accepted only if the fields
+// this library does not know are all zero, that is, left at their defaults.
 template <typename T>
 SizedResult read_sized(const T *in, size_t caller_size, size_t min_size, T *out)
 {
     if (caller_size < min_size)
         return SizedResult::too_small;
+    if (caller_size > kMaxStructSize)
+        return SizedResult::too_large;
     if (caller_size > sizeof(T)) {
         const unsigned char *extra = reinterpret_cast<const unsigned char *>(in) + sizeof(T);
         for (size_t i = 0; i < caller_size - sizeof(T); i++)

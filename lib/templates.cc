@@ -14,14 +14,24 @@ constexpr size_t kDescFloats = (size_t)kPoints * kDescDim;
 
 } // namespace
 
-void TemplateBank::describe(const Planes &img, const ct_detection *dets, size_t n,
-                            float low_score)
+void TemplateBank::begin(const Planes &img, const ct_detection *dets, size_t n)
 {
-    det_desc_.resize(n * kDescFloats);
-    for (size_t j = 0; j < n; j++)
-        if (dets[j].score >= low_score)
-            ctrack::describe(img, dets[j].left, dets[j].top, dets[j].width, dets[j].height,
-                             &det_desc_[j * kDescFloats]);
+    img_ = img;
+    dets_ = dets;
+    desc_of_.assign(n, -1);
+    det_desc_.clear();
+}
+
+const float *TemplateBank::descriptors(int det)
+{
+    int &slot = desc_of_[(size_t)det];
+    if (slot < 0) {
+        slot = (int)(det_desc_.size() / kDescFloats);
+        det_desc_.resize(det_desc_.size() + kDescFloats);
+        const ct_detection &d = dets_[det];
+        describe(img_, d.left, d.top, d.width, d.height, &det_desc_[(size_t)slot * kDescFloats]);
+    }
+    return &det_desc_[(size_t)slot * kDescFloats];
 }
 
 double TemplateBank::similarity(const Track &t, int det)
@@ -29,7 +39,7 @@ double TemplateBank::similarity(const Track &t, int det)
     if (t.tmpl < 0)
         return 1.0;
     ddis_runs++;
-    return ddis_.ddis(templates_[t.tmpl], &det_desc_[(size_t)det * kDescFloats]);
+    return ddis_.ddis(templates_[(size_t)t.tmpl], descriptors(det));
 }
 
 void TemplateBank::learn(std::vector<Track> &tracks, const std::vector<Track> &saved,
@@ -55,7 +65,7 @@ void TemplateBank::learn(std::vector<Track> &tracks, const std::vector<Track> &s
             templates_.emplace_back();
             slot_used_.push_back(0);
         }
-        templates_[slot].build(&det_desc_[(size_t)t.det_index * kDescFloats]);
+        templates_[slot].build(descriptors(t.det_index));
         slot_used_[slot] = 1;
         t.tmpl = (int)slot;
         t.tmpl_us = t_us;
@@ -66,7 +76,7 @@ void TemplateBank::learn(std::vector<Track> &tracks, const std::vector<Track> &s
 size_t TemplateBank::memory_bytes() const
 {
     size_t b = templates_.capacity() * sizeof(Template) + slot_used_.capacity() +
-               det_desc_.capacity() * sizeof(float);
+               desc_of_.capacity() * sizeof(int) + det_desc_.capacity() * sizeof(float);
     for (const Template &tp : templates_)
         b += tp.desc.capacity() * sizeof(float) + tp.index.memory_bytes();
     return b;

@@ -15,9 +15,11 @@ namespace ctrack {
 
 class TemplateBank {
 public:
-    // Each detection's descriptors, once a step (those scoring under
-    // low_score are never compared, and are left undescribed).
-    void describe(const Planes &img, const ct_detection *dets, size_t n, float low_score);
+    // This step's frame and detections. A detection is described when it is
+    // first compared or makes a template, at most once a step: only those a
+    // gate lets near a track cost anything. img and dets must stay valid
+    // until the step ends.
+    void begin(const Planes &img, const ct_detection *dets, size_t n);
     // DDIS of this step's detection det against the track's template; a
     // track without one looks like anything (1).
     double similarity(const Track &t, int det);
@@ -34,9 +36,15 @@ public:
     uint64_t ddis_runs = 0, builds = 0;
 
 private:
+    // Detection det's descriptors, described on first use.
+    const float *descriptors(int det);
+
     std::vector<Template> templates_;
     std::vector<char> slot_used_;
-    std::vector<float> det_desc_;
+    Planes img_;
+    const ct_detection *dets_ = nullptr;
+    std::vector<int> desc_of_;    // per detection: its descriptors' slot, or -1
+    std::vector<float> det_desc_; // described detections, kPoints * kDescDim each
     Ddis ddis_;
 };
 

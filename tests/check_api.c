@@ -92,6 +92,38 @@ START_TEST(get_tracks_bad_arguments)
 }
 END_TEST
 
+/* A size field that is garbage (never set, or overwritten) is refused
+ * before a byte past the caller's struct is read: the structs here are
+ * exactly their size on the heap, so a read past them is a sanitizer's
+ * report too. */
+START_TEST(garbage_struct_sizes)
+{
+    const size_t garbage[] = {(size_t)1 << 20, (size_t)-1, (size_t)1 << 17};
+    ct_config *cfg = malloc(sizeof *cfg);
+    ct_frame *f = malloc(sizeof *f);
+    ck_assert(cfg && f);
+    ct_tracker *t = test_tracker(NULL);
+    for (size_t i = 0; i < sizeof garbage / sizeof garbage[0]; i++) {
+        ck_assert_int_eq(ct_config_default(cfg, sizeof *cfg), CT_OK);
+        cfg->size = garbage[i];
+        char msg[256];
+        ck_assert_int_eq(ct_config_check(cfg, msg, sizeof msg), CT_ERROR_INVALID_ARGUMENT);
+        ck_assert_ptr_nonnull(strstr(msg, "config.size"));
+        ct_tracker *bad = (ct_tracker *)1;
+        ck_assert_int_eq(ct_tracker_create(cfg, &bad), CT_ERROR_INVALID_ARGUMENT);
+        ck_assert_ptr_null(bad);
+
+        ck_assert_int_eq(ct_frame_default(f, sizeof *f), CT_OK);
+        f->size = garbage[i];
+        ck_assert_int_eq(ct_tracker_feed(t, f, NULL, 0), CT_ERROR_INVALID_ARGUMENT);
+        ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "frame.size"));
+    }
+    ct_tracker_destroy(t);
+    free(cfg);
+    free(f);
+}
+END_TEST
+
 /* A newer caller's bigger ct_track: the library fills what it knows and
  * zeroes the rest of each element. */
 START_TEST(get_tracks_bigger_elements)
@@ -548,6 +580,7 @@ static Suite *api_suite(void)
     tcase_add_test(tc, create_and_destroy_bad_arguments);
     tcase_add_test(tc, null_tracker);
     tcase_add_test(tc, get_tracks_bad_arguments);
+    tcase_add_test(tc, garbage_struct_sizes);
     tcase_add_test(tc, get_tracks_bigger_elements);
     tcase_add_loop_test(tc, bad_frame_is_refused, 0, (int)(sizeof bad_frames / sizeof bad_frames[0]));
     tcase_add_test(tc, null_frame);

@@ -54,6 +54,17 @@ double brute_force(const std::vector<double> &c, int n, int m, double limit)
     return best;
 }
 
+// The pairs of a dense cost matrix that the limit allows.
+std::vector<ctrack::Pair> allowed(const std::vector<double> &c, int n, int m, double limit)
+{
+    std::vector<ctrack::Pair> p;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < m; j++)
+            if (c[(size_t)i * m + j] < limit)
+                p.push_back(ctrack::Pair{i, j, c[(size_t)i * m + j]});
+    return p;
+}
+
 uint64_t rng_state = 88172645463325252ull;
 double uniform()
 {
@@ -78,7 +89,7 @@ START_TEST(matches_brute_force)
             if (uniform() < 0.1)
                 x = std::round(x * 4) / 4; // ties
         }
-        a.solve(c.data(), n, m, limit, r2c);
+        a.solve(n, m, allowed(c, n, m, limit), limit, r2c);
         ck_assert_int_eq((int)r2c.size(), n);
         std::vector<char> used(m, 0);
         for (int i = 0; i < n; i++) {
@@ -97,34 +108,75 @@ START_TEST(matches_brute_force)
 }
 END_TEST
 
-// Separate groups of people are solved apart: a big sparse problem still
-// gets the diagonal answer.
+// Separate groups of people are solved apart: many small components, each
+// exact, give the diagonal answer of a problem far larger than any
+// component; and one chain longer than kExactNodes, solved greedily, too.
 START_TEST(block_diagonal)
 {
-    const int n = 300;
-    std::vector<double> c(n * n, 1.0);
-    for (int i = 0; i < n; i++) {
-        c[i * n + i] = 0.1;
-        if (i + 1 < n)
-            c[i * n + i + 1] = 0.5;
-    }
+    const int n = 3000;
     ctrack::Assigner a;
     std::vector<int> r2c;
-    a.solve(c.data(), n, n, 0.8, r2c);
+    std::vector<ctrack::Pair> p;
+    for (int i = 0; i < n; i++) {
+        p.push_back(ctrack::Pair{i, i, 0.1});
+        if (i % 3 != 2)
+            p.push_back(ctrack::Pair{i, i + 1, 0.5});
+    }
+    a.solve(n, n, p, 0.8, r2c);
     for (int i = 0; i < n; i++)
         ck_assert_int_eq(r2c[i], i);
+    p.clear();
+    for (int i = 0; i < 300; i++) {
+        p.push_back(ctrack::Pair{i, i, 0.1});
+        if (i + 1 < 300)
+            p.push_back(ctrack::Pair{i, i + 1, 0.5});
+    }
+    a.solve(300, 300, p, 0.8, r2c);
+    for (int i = 0; i < 300; i++)
+        ck_assert_int_eq(r2c[i], i);
+}
+END_TEST
+
+// A component over kExactNodes is solved greedily: by increasing cost, each
+// pair taken when both ends are free. Every row gets a column when it has
+// one free, and no column is used twice.
+START_TEST(large_component_greedy)
+{
+    const int n = 200, m = 400;
+    std::vector<double> c((size_t)n * m);
+    for (double &x : c)
+        x = uniform();
+    const double limit = 0.9;
+    const std::vector<ctrack::Pair> p = allowed(c, n, m, limit);
+    ctrack::Assigner a;
+    std::vector<int> r2c;
+    a.solve(n, m, p, limit, r2c);
+    std::vector<char> used(m, 0);
+    for (int i = 0; i < n; i++) {
+        const int j = r2c[i];
+        ck_assert_int_ge(j, 0); // 400 columns, each row allows 90% of them
+        ck_assert(!used[j]);
+        used[j] = 1;
+        ck_assert(c[(size_t)i * m + j] < limit);
+    }
+    // Greedy: the cheapest pair of all is taken.
+    const ctrack::Pair *best = &p[0];
+    for (const ctrack::Pair &q : p)
+        if (q.cost < best->cost)
+            best = &q;
+    ck_assert_int_eq(r2c[best->row], best->col);
 }
 END_TEST
 
 START_TEST(nothing_allowed)
 {
-    std::vector<double> c = {0.9, 0.95, 1.0, 0.99};
     ctrack::Assigner a;
     std::vector<int> r2c;
-    a.solve(c.data(), 2, 2, 0.5, r2c);
+    a.solve(2, 2, {}, 0.5, r2c);
+    ck_assert_int_eq((int)r2c.size(), 2);
     ck_assert_int_eq(r2c[0], -1);
     ck_assert_int_eq(r2c[1], -1);
-    a.solve(nullptr, 0, 5, 0.5, r2c);
+    a.solve(0, 5, {}, 0.5, r2c);
     ck_assert_int_eq((int)r2c.size(), 0);
 }
 END_TEST
@@ -136,6 +188,7 @@ int main()
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, matches_brute_force);
     tcase_add_test(tc, block_diagonal);
+    tcase_add_test(tc, large_component_greedy);
     tcase_add_test(tc, nothing_allowed);
     suite_add_tcase(s, tc);
     return run_suite(s);

@@ -96,6 +96,13 @@ static int open_run(run *r)
             r->rate_den = info.rate_den;
         }
         r->frames = info.frames;
+        /* Detections far past the video's end are another video's. */
+        if (o->det_path && r->frames > 0 && r->df.max_frame > 2 * r->frames + 1000) {
+            fprintf(stderr, "ct-track: %s: detections go to frame %d, far past the %lld frames "
+                            "of %s: is it the video's detections file?\n",
+                    o->det_path, r->df.max_frame, r->frames, o->input_path);
+            return -1;
+        }
     } else {
         r->frames = r->df.max_frame;
     }

@@ -10,6 +10,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "video.h"
+
 typedef struct {
     const char *name;
     char type; /* 'f' float, 'd' double, 'i' int32 */
@@ -238,8 +240,9 @@ int options_parse(int argc, char **argv, options *o)
         case 'r': {
             char *end;
             o->fps = strtod(optarg, &end);
-            if (end == optarg || *end || !(o->fps > 0 && o->fps <= 10000)) {
-                fprintf(stderr, "ct-track: --fps: '%s' is not a rate in (0, 10000]\n", optarg);
+            if (end == optarg || *end || !(o->fps >= VIDEO_MIN_RATE && o->fps <= VIDEO_MAX_RATE)) {
+                fprintf(stderr, "ct-track: --fps: '%s' is not a rate in [%g, %g]\n", optarg,
+                        VIDEO_MIN_RATE, VIDEO_MAX_RATE);
                 return EXIT_USAGE;
             }
             break;

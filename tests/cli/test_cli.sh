@@ -167,6 +167,18 @@ printf 'YUV4MPEG2 W640 H480 F0:0\n' > "$tmp/rate.y4m"
 expect "y4m bad rate" 1 "frame rate" -- "$ct" -d "$tud/det/det.txt" "$tmp/rate.y4m"
 printf 'YUV4MPEG2 W99999 H480\n' > "$tmp/huge.y4m"
 expect "y4m absurd size" 1 "absurd" -- "$ct" -d "$tud/det/det.txt" "$tmp/huge.y4m"
+# Numbers are checked as the types they become: a width that wraps to 1 as
+# an int, a rate past INT_MAX, a NUL byte that hides the rest of the line.
+printf 'YUV4MPEG2 W4294967297 H2 F25:1\nFRAME\nabcdef' > "$tmp/wrap.y4m"
+expect "y4m width past 32 bits" 1 "absurd" -- "$ct" -d "$tud/det/det.txt" "$tmp/wrap.y4m"
+printf 'YUV4MPEG2 W2 H2 F99999999999:1\nFRAME\nabcdef' > "$tmp/fast.y4m"
+expect "y4m rate past INT_MAX" 1 "frame rate" -- "$ct" -d "$tud/det/det.txt" "$tmp/fast.y4m"
+printf 'YUV4MPEG2 W2 H2 F1:999999999\nFRAME\nabcdef' > "$tmp/slow.y4m"
+expect "y4m rate too slow" 1 "frame rate" -- "$ct" -d "$tud/det/det.txt" "$tmp/slow.y4m"
+printf 'YUV4MPEG2 W2 H2 F25:1\0 W9\nFRAME\nabcdef' > "$tmp/nul.y4m"
+expect "y4m header with a NUL byte" 1 "NUL" -- "$ct" -d "$tud/det/det.txt" "$tmp/nul.y4m"
+printf 'YUV4MPEG2 W2 H2 F25:1\nFRAME\0junk\nabcdef' > "$tmp/nulframe.y4m"
+expect "y4m frame line with a NUL byte" 1 "bad Y4M frame header" -- "$ct" -d "$tud/det/det.txt" "$tmp/nulframe.y4m"
 printf 'YUV4MPEG2 W640 H480 Q7\n' > "$tmp/field.y4m"
 expect "y4m unknown field" 1 "unknown field" -- "$ct" -d "$tud/det/det.txt" "$tmp/field.y4m"
 printf 'YUV4MPEG2 W2 H2 F25:1 Ip A1:1 C420mpeg2 XYSCSS=420MPEG2 XCOLORRANGE=FULL\nFRAME\nabcdef' > "$tmp/tiny.y4m"
@@ -191,6 +203,20 @@ printf '1,-1,10,10,-20,40,0.9\n' > "$tmp/neg.txt"
 expect "negative width" 1 "neg.txt:1: box size" -- "$ct" -d "$tmp/neg.txt" -s 640x480
 printf '1,-1,10,10,20,40,inf\n' > "$tmp/inf.txt"
 expect "infinite score" 1 "inf.txt:1: field 7" -- "$ct" -d "$tmp/inf.txt" -s 640x480
+printf '1,-1,10,10,1e-50,40,0.9\n' > "$tmp/tinybox.txt"
+expect "box size zero as a float" 1 "tinybox.txt:1: box size" -- "$ct" -d "$tmp/tinybox.txt" -s 640x480
+printf '1,-1,10,10,20,40,1e300\n' > "$tmp/bigscore.txt"
+expect "score past a float" 1 "bigscore.txt:1: field 7" -- "$ct" -d "$tmp/bigscore.txt" -s 640x480
+printf '1,-1,10,10,20,40,0.9\0,junk\n' > "$tmp/nuldet.txt"
+expect "detection line with a NUL byte" 1 "nuldet.txt:1: a NUL byte" -- "$ct" -d "$tmp/nuldet.txt" -s 640x480
+printf '\0,garbage\n' > "$tmp/nulfirst.txt"
+expect "detection line starting with a NUL byte" 1 "nulfirst.txt:1: a NUL byte" -- "$ct" -d "$tmp/nulfirst.txt" -s 640x480
+# A frame number past the limit is refused at once (detections only, it
+# would make ct-track feed that many empty frames first).
+printf '99999999,-1,10,10,20,40,0.9\n' > "$tmp/far.txt"
+expect "frame past the limit" 1 "far.txt:1: frame 99999999" -- timeout 10 "$ct" -d "$tmp/far.txt" -s 640x480
+printf '5000,-1,10,10,20,40,0.9\n' > "$tmp/past.txt"
+expect "detections far past the video" 1 "far past" -- "$ct" -d "$tmp/past.txt" "$tmp/tiny.y4m"
 printf '# a comment\n\n3,-1,10,10,20,40,0.9\n1,-1,10,10,20,40,0.9\n2,-1,11,10,20,40,0.9\n' > "$tmp/unordered.txt"
 expect "unordered lines and comments" 0 "" -- "$ct" -q -d "$tmp/unordered.txt"
 [ "$(cut -d, -f1 "$tmp/out" | tr '\n' ' ')" = "1 2 3 " ] && ok "unordered lines sorted by frame" || bad "unordered lines sorted by frame" "$(cat "$tmp/out")"
@@ -209,6 +235,7 @@ expect "size garbage" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 640
 expect "bad format" 2 "--format" -- "$ct" -d "$tud/det/det.txt" -f yuyv
 expect "bad fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r 0
 expect "nan fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r nan
+expect "fps too slow" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r 0.0001
 expect "unknown parameter" 2 "unknown parameter 'bogus'" -- "$ct" -d "$tud/det/det.txt" -p bogus=1
 expect "parameter without value" 2 "NAME=VALUE" -- "$ct" -d "$tud/det/det.txt" -p min_hits
 expect "parameter not a number" 2 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -p min_hits=2.5

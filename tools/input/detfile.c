@@ -67,6 +67,11 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
         lineno++;
         while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
             line[--len] = '\0';
+        if (memchr(line, '\0', (size_t)len)) {
+            snprintf(err, err_len, "%s:%zu: a NUL byte in the line (is it a text file?)",
+                     path, lineno);
+            goto out;
+        }
         size_t lead = strspn(line, " \t");
         if (line[lead] == '\0' || line[lead] == '#')
             continue;
@@ -79,20 +84,23 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
                      path, lineno, line);
             goto out;
         }
-        if (v[0] < 1 || v[0] > 1e8 || v[0] != floor(v[0])) {
-            snprintf(err, err_len, "%s:%zu: frame %g is not a whole number >= 1", path, lineno,
-                     v[0]);
+        if (!(v[0] >= 1 && v[0] <= DETFILE_MAX_FRAME) || v[0] != floor(v[0])) {
+            snprintf(err, err_len, "%s:%zu: frame %.10g is not a whole number in [1, %d]", path,
+                     lineno, v[0], DETFILE_MAX_FRAME);
             goto out;
         }
-        for (int k = 2; k < 7; k++)
-            if (!isfinite(v[k]) || fabs(v[k]) > 1e6) {
-                snprintf(err, err_len, "%s:%zu: field %d (%g) is not a finite number", path,
-                         lineno, k + 1, v[k]);
+        /* The box and score as the tracker takes them: 32-bit floats. */
+        const float box[5] = {(float)v[2], (float)v[3], (float)v[4], (float)v[5], (float)v[6]};
+        for (int k = 0; k < 5; k++)
+            if (!isfinite(box[k]) || fabsf(box[k]) > 1e6f) {
+                snprintf(err, err_len, "%s:%zu: field %d (%g) is not a finite number within "
+                                       "+-1e6",
+                         path, lineno, k + 3, v[k + 2]);
                 goto out;
             }
-        if (v[4] <= 0 || v[5] <= 0) {
-            snprintf(err, err_len, "%s:%zu: box size %gx%g is not positive", path, lineno,
-                     v[4], v[5]);
+        if (!(box[2] > 0) || !(box[3] > 0)) {
+            snprintf(err, err_len, "%s:%zu: box size %gx%g is not positive (as a 32-bit float)",
+                     path, lineno, v[4], v[5]);
             goto out;
         }
         if (count == cap) {
@@ -108,11 +116,11 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
         entry *e = &list[count];
         e->frame = (int)v[0];
         e->order = count;
-        e->det.left = (float)v[2];
-        e->det.top = (float)v[3];
-        e->det.width = (float)v[4];
-        e->det.height = (float)v[5];
-        e->det.score = (float)v[6];
+        e->det.left = box[0];
+        e->det.top = box[1];
+        e->det.width = box[2];
+        e->det.height = box[3];
+        e->det.score = box[4];
         e->det.class_id = 0;
         count++;
     }

@@ -18,7 +18,15 @@ typedef struct det_file {
     size_t cursor;      /* next detection for detfile_frame() */
 } det_file;
 
-/* Loads a whole file. Returns 0, or -1 with "FILE:LINE: what" in err. */
+/* The last frame number a detections file may name: about four days at 30
+ * frames/s. A larger one is taken for garbage (with detections only,
+ * ct-track would feed that many frames). */
+#define DETFILE_MAX_FRAME 10000000
+
+/* Loads a whole file. Every field is checked as the number the tracker
+ * takes (boxes and scores as 32-bit floats: finite, sizes positive); a NUL
+ * byte, a frame outside [1, DETFILE_MAX_FRAME] or a malformed line is an
+ * error. Returns 0, or -1 with "FILE:LINE: what" in err. */
 int detfile_load(const char *path, det_file *out, char *err, size_t err_len);
 
 /* The detections of `frame` (frames must be asked in increasing order). */

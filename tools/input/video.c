@@ -2,6 +2,7 @@
 #include "video.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,7 @@ struct video_input {
     unsigned char pending[16];
     size_t pending_len, pending_pos;
     long long frame_index;
+    long header_bytes; /* Y4M: the header line's */
 };
 
 size_t frame_bytes(uint32_t format, int width, int height)
@@ -70,6 +72,17 @@ static long read_line(video_input *in, char *line, size_t max)
     return (long)n;
 }
 
+/* A decimal number in [lo, hi] that fills the whole of s, or -1. */
+static long parse_number(const char *s, long lo, long hi)
+{
+    if (*s < '0' || *s > '9') /* strtol would take a sign or blanks */
+        return -1;
+    char *end;
+    errno = 0;
+    const long v = strtol(s, &end, 10);
+    return *end || errno || v < lo || v > hi ? -1 : v;
+}
+
 static int parse_y4m_header(video_input *in, video_info *info, char *err, size_t err_len)
 {
     char line[Y4M_MAX_LINE];
@@ -78,27 +91,41 @@ static int parse_y4m_header(video_input *in, video_info *info, char *err, size_t
         snprintf(err, err_len, "bad Y4M header: %s", len == -1 ? "empty" : "too long or cut");
         return -1;
     }
-    int w = 0, h = 0, rn = 0, rd = 0;
+    if ((size_t)len != strlen(line)) {
+        snprintf(err, err_len, "bad Y4M header: a NUL byte in it");
+        return -1;
+    }
+    long w = 0, h = 0, rn = 0, rd = 0;
     uint32_t format = CT_FORMAT_I420; /* 4:2:0 is Y4M's default */
     char *save = NULL;
     char *tok = strtok_r(line + strlen(Y4M_SIGNATURE) - 1, " ", &save);
     for (; tok; tok = strtok_r(NULL, " ", &save)) {
-        char *end = NULL;
         switch (tok[0]) {
         case 'W':
-            w = (int)strtol(tok + 1, &end, 10);
-            if (*end || end == tok + 1) w = -1;
+            w = parse_number(tok + 1, 1, MAX_SIDE);
             break;
         case 'H':
-            h = (int)strtol(tok + 1, &end, 10);
-            if (*end || end == tok + 1) h = -1;
+            h = parse_number(tok + 1, 1, MAX_SIDE);
             break;
-        case 'F':
-            if (sscanf(tok + 1, "%d:%d", &rn, &rd) != 2 || rn <= 0 || rd <= 0) {
-                snprintf(err, err_len, "bad Y4M header: frame rate '%s'", tok);
+        case 'F': {
+            char *colon = strchr(tok + 1, ':');
+            if (colon) {
+                *colon = '\0';
+                rn = parse_number(tok + 1, 1, INT_MAX);
+                rd = parse_number(colon + 1, 1, INT_MAX);
+                *colon = ':';
+            }
+            /* The rate as ct-track's --fps takes it. */
+            if (!colon || rn < 0 || rd < 0 || (double)rn / rd < VIDEO_MIN_RATE ||
+                (double)rn / rd > VIDEO_MAX_RATE) {
+                snprintf(err, err_len,
+                         "bad Y4M header: frame rate '%s' is not NUM:DEN of %g to %g "
+                         "frames/s",
+                         tok, VIDEO_MIN_RATE, VIDEO_MAX_RATE);
                 return -1;
             }
             break;
+        }
         case 'C':
             if (!strcmp(tok, "C420") || !strcmp(tok, "C420jpeg") ||
                 !strcmp(tok, "C420paldv") || !strcmp(tok, "C420mpeg2")) {
@@ -123,16 +150,19 @@ static int parse_y4m_header(video_input *in, video_info *info, char *err, size_t
             return -1;
         }
     }
-    if (w < 1 || h < 1 || w > MAX_SIDE || h > MAX_SIDE) {
-        snprintf(err, err_len, "bad Y4M header: size %dx%d is missing or absurd", w, h);
+    if (w < 1 || h < 1) {
+        snprintf(err, err_len,
+                 "bad Y4M header: size %s is missing or absurd (each side must be in [1, %d])",
+                 w < 1 ? "W" : "H", MAX_SIDE);
         return -1;
     }
-    in->width = w;
-    in->height = h;
+    in->width = (int)w;
+    in->height = (int)h;
     in->format = format;
-    info->rate_num = rn;
-    info->rate_den = rd;
+    info->rate_num = (int)rn;
+    info->rate_den = (int)rd;
     info->frames = -1;
+    in->header_bytes = len + 1;
     return 0;
 }
 
@@ -199,8 +229,11 @@ int video_open(const char *path, const video_params *params, video_input **out,
         video_close(in);
         return -1;
     }
+    struct stat st;
+    if (in->y4m && !is_stdin && fstat(fileno(in->f), &st) == 0 && S_ISREG(st.st_mode))
+        info->frames = ((long long)st.st_size - in->header_bytes) /
+                       (long long)(strlen("FRAME\n") + in->frame_bytes);
     if (!in->y4m && !is_stdin) {
-        struct stat st;
         if (fstat(fileno(in->f), &st) == 0 && S_ISREG(st.st_mode)) {
             long long total = (long long)st.st_size;
             if (total % (long long)in->frame_bytes != 0) {
@@ -234,7 +267,8 @@ int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len)
         long len = read_line(in, line, sizeof line);
         if (len == -1)
             return 0;
-        if (len < 0 || strncmp(line, "FRAME", 5) != 0 || (line[5] != '\0' && line[5] != ' ')) {
+        if (len < 0 || (size_t)len != strlen(line) || strncmp(line, "FRAME", 5) != 0 ||
+            (line[5] != '\0' && line[5] != ' ')) {
             snprintf(err, err_len, "bad Y4M frame header at frame %lld", in->frame_index + 1);
             return -1;
         }

@@ -14,6 +14,11 @@ extern "C" {
 
 typedef struct video_input video_input;
 
+/* The frame rates ct-track takes, from --fps or a Y4M header, in frames
+ * per second: slower ones would overflow the timestamps of long videos. */
+#define VIDEO_MIN_RATE 0.001
+#define VIDEO_MAX_RATE 10000.0
+
 typedef struct video_params {
     /* Raw input only: the size and format (CT_FORMAT_*). Y4M carries its own
      * and these are ignored. */
@@ -26,14 +31,15 @@ typedef struct video_info {
     uint32_t format;
     /* Frame rate from the Y4M header (0/0 for raw input). */
     int rate_num, rate_den;
-    /* Frames in the file when known from its size (raw regular files), else -1. */
+    /* Frames in the file when known from its size (regular files; for Y4M
+     * the count if no FRAME line carries parameters), else -1. */
     long long frames;
 } video_info;
 
 /* Opens `path` ("-" for standard input). Recognises Y4M by its signature.
  * Returns 0, or -1 with a message in err. */
 int video_open(const char *path, const video_params *params, video_input **out,
-                  video_info *info, char *err, size_t err_len);
+               video_info *info, char *err, size_t err_len);
 
 /* Reads the next frame into *frame (planes point into the reader's buffer,
  * valid until the next read). Returns 1 for a frame, 0 at a clean end, -1 on

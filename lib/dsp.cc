@@ -1,0 +1,12 @@
+#include "dsp.h"
+
+#include "convert.h"
+
+namespace ctrack {
+
+void dsp_init(Dsp *dsp, unsigned flags)
+{
+    convert_dsp_init(dsp, flags);
+}
+
+} // namespace ctrack

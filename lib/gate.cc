@@ -1,0 +1,86 @@
+#include "gate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ctrack {
+
+void Gate::index(const ct_detection *dets, const std::vector<int> &cols)
+{
+    dets_ = dets;
+    cols_ = &cols;
+    order_.resize(cols.size());
+    for (size_t k = 0; k < cols.size(); k++)
+        order_[k] = (int)k;
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+        const float la = dets[cols[(size_t)a]].left, lb = dets[cols[(size_t)b]].left;
+        return la != lb ? la < lb : a < b;
+    });
+    left_.resize(order_.size());
+    max_width_ = 0;
+    for (size_t i = 0; i < order_.size(); i++) {
+        const ct_detection &d = dets[cols[(size_t)order_[i]]];
+        left_[i] = d.left;
+        max_width_ = std::max(max_width_, (double)d.width);
+    }
+}
+
+void Gate::range(double lo, double hi, size_t *first, size_t *last) const
+{
+    *first = (size_t)(std::lower_bound(left_.begin(), left_.end(), lo) - left_.begin());
+    *last = (size_t)(std::lower_bound(left_.begin(), left_.end(), hi) - left_.begin());
+}
+
+void Gate::keep_best(std::vector<Pair> &out)
+{
+    if (row_.size() > (size_t)kMaxPairsPerTrack) {
+        std::nth_element(row_.begin(), row_.begin() + kMaxPairsPerTrack, row_.end(),
+                         [](const Pair &a, const Pair &b) {
+                             return a.cost != b.cost ? a.cost < b.cost : a.col < b.col;
+                         });
+        row_.resize(kMaxPairsPerTrack);
+    }
+    std::sort(row_.begin(), row_.end(), [](const Pair &a, const Pair &b) { return a.col < b.col; });
+    out.insert(out.end(), row_.begin(), row_.end());
+}
+
+void Gate::overlapping(int row, const Box &box, double min_iou, std::vector<Pair> &out)
+{
+    row_.clear();
+    // A detection overlaps the box only if its left edge lies in
+    // (box.left - widest detection, box right edge).
+    size_t first, last;
+    range(box.left - max_width_, box.left + box.width, &first, &last);
+    for (size_t i = first; i < last; i++) {
+        const int k = order_[i];
+        const double o = iou(box, det_box(dets_[(*cols_)[(size_t)k]]));
+        if (o + 1e-12 >= min_iou)
+            row_.push_back(Pair{row, k, 1.0 - o});
+    }
+    keep_best(out);
+}
+
+void Gate::near(int row, double cx, double cy, double reach, double h, std::vector<Pair> &out)
+{
+    row_.clear();
+    size_t first, last;
+    range(cx - reach - max_width_ / 2 - 1, cx + reach + 1, &first, &last);
+    for (size_t i = first; i < last; i++) {
+        const int k = order_[i];
+        const ct_detection &d = dets_[(*cols_)[(size_t)k]];
+        const double dx = d.left + d.width / 2 - cx, dy = d.top + d.height / 2 - cy;
+        const double ratio = d.height / h;
+        const double dist = std::hypot(dx, dy);
+        if (dist <= reach && ratio > 0.67 && ratio < 1.5)
+            row_.push_back(Pair{row, k, dist});
+    }
+    keep_best(out);
+}
+
+size_t Gate::memory_bytes() const
+{
+    return order_.capacity() * sizeof(int) + left_.capacity() * sizeof(double) +
+           row_.capacity() * sizeof(Pair);
+}
+
+} // namespace ctrack

@@ -1,0 +1,56 @@
+// The association's gates: which (track, detection) pairs may be compared,
+// found from the detections sorted by their left edge rather than by
+// comparing every track with every detection, and at most
+// kMaxPairsPerTrack for any one track, so that a flood of overlapping
+// detections (a detector without non-maximum suppression) costs a bounded
+// number of appearance comparisons and a sparse assignment.
+#ifndef CTRACK_GATE_H
+#define CTRACK_GATE_H
+
+#include <vector>
+
+#include "ctrack/ctrack.h"
+#include "assign.h"
+#include "track.h"
+
+namespace ctrack {
+
+// The pairs one track keeps at most: its best by overlap (or nearness).
+// A real scene gives a track one to three.
+constexpr int kMaxPairsPerTrack = 16;
+
+class Gate {
+public:
+    // Indexes the detections dets[cols[k]] for the queries that follow;
+    // pairs name them by their position k in cols. cols must outlive the
+    // queries.
+    void index(const ct_detection *dets, const std::vector<int> &cols);
+    // Appends (row, k, 1 - IoU) for the indexed detections whose IoU with
+    // `box` reaches min_iou (an IoU within 1e-12 of it counts), the
+    // kMaxPairsPerTrack highest when more do (ties: the lower k).
+    void overlapping(int row, const Box &box, double min_iou, std::vector<Pair> &out);
+    // Appends (row, k, distance) for the indexed detections whose centre
+    // lies within `reach` of (cx, cy) and whose height is within (0.67, 1.5)
+    // times h, the kMaxPairsPerTrack nearest when more do (ties: the lower
+    // k).
+    void near(int row, double cx, double cy, double reach, double h, std::vector<Pair> &out);
+    size_t memory_bytes() const;
+
+private:
+    // The positions k whose detection's left edge may lie in [lo, hi).
+    void range(double lo, double hi, size_t *first, size_t *last) const;
+    // Keeps the row's kMaxPairsPerTrack best (lowest cost) of row_ and
+    // appends them to out in increasing k.
+    void keep_best(std::vector<Pair> &out);
+
+    const ct_detection *dets_ = nullptr;
+    const std::vector<int> *cols_ = nullptr;
+    std::vector<int> order_;   // positions k by increasing left edge
+    std::vector<double> left_; // the left edges in that order
+    double max_width_ = 0;
+    std::vector<Pair> row_;
+};
+
+} // namespace ctrack
+
+#endif
