@@ -22,7 +22,7 @@ ct_config default_config()
     c.tentative_match_iou = 0.3f;
     c.min_hits = 3;
     c.lost_lifetime = 3.0;
-    c.report_lost_time = 0.15;
+    c.report_lost_time = 0.5;
     c.motion_noise = 0.5f;
     c.detection_noise = 0.05f;
     c.clip_boxes = 0;
@@ -38,6 +38,8 @@ ct_config default_config()
     c.reid_max_speed = 1.5f;
     c.candidate_min_score = 0.8f;
     c.verify_detections = 0;
+    c.start_score = 0.8f;
+    c.report_lost_sd = 0.08f;
     return c;
 }
 
@@ -163,6 +165,12 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     if (c.verify_detections != 0 && c.verify_detections != 1)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.verify_detections: %d is not 0 or 1", (int)c.verify_detections);
+    if (!in_range(c.start_score, 0, 1))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.start_score: %g is not in [0, 1]", (double)c.start_score);
+    if (!in_range(c.report_lost_sd, 0, 10))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.report_lost_sd: %g is not in [0, 10]", (double)c.report_lost_sd);
     if (out)
         *out = c;
     return CT_OK;

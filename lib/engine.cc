@@ -26,6 +26,7 @@ Engine::Engine(const ct_config &cfg) : cfg_(cfg)
 void Engine::reset()
 {
     pixels_.reset();
+    scene_.reset();
     tracks_.clear();
     reported_.clear();
     has_time_ = false;
@@ -86,6 +87,12 @@ void Engine::learn_models(const Planes &img)
 
 void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
 {
+    // The scene's motion is learnt from a detector's boxes (the pixels'
+    // blobs need a still camera, and jitter on their own), on the tracks
+    // that were confirmed before this step: a tentative track's first
+    // steps tell little.
+    if (t.state == CT_TRACK_CONFIRMED && cfg_.source == CT_SOURCE_DETECTIONS)
+        scene_.observe(t.centre_nis(d, cfg_.detection_noise));
     t.correct(d, cfg_.detection_noise, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
@@ -187,6 +194,22 @@ void Engine::reidentify(const ct_detection *dets)
                      pool_dets_.end());
 }
 
+void Engine::recover(const ct_detection *dets)
+{
+    for (int i : pool_tracks_)
+        tracks_[(size_t)i].cue = tracks_[(size_t)i].seen;
+    match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
+    for (int i : pool_tracks_)
+        tracks_[(size_t)i].cue = tracks_[(size_t)i].box();
+}
+
+bool Engine::hidden_in_view(const Track &t, size_t i) const
+{
+    const double limit = cfg_.report_lost_sd;
+    return std::sqrt(t.cx.p00) <= limit * t.w.x && std::sqrt(t.cy.p00) <= limit * t.h.x &&
+           occluded(tracks_, i);
+}
+
 void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
                   size_t n)
 {
@@ -194,6 +217,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
     saved_reported_ = reported_;
     saved_candidates_ = pixels_.candidates();
     const uint64_t next_id = next_id_;
+    const SceneMotion scene = scene_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
     const uint64_t runs[3] = {ms_runs_, bank_.ddis_runs, bank_.builds};
@@ -210,6 +234,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
         pixels_.candidates() = saved_candidates_;
         pixels_.rollback();
         next_id_ = next_id;
+        scene_ = scene;
         last_us_ = last_us;
         has_time_ = has_time;
         ms_runs_ = runs[0];
@@ -231,8 +256,9 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     has_time_ = true;
 
     Stopwatch sw;
+    const double motion_noise = cfg_.motion_noise * std::sqrt(scene_.scale());
     for (Track &t : tracks_)
-        t.predict(dt, cfg_.motion_noise);
+        t.predict(dt, motion_noise);
     stage_ns_[CT_STAGE_PREDICT] += sw.lap();
     pixels_.clear();
     if (cfg_.source == CT_SOURCE_PIXELS) {
@@ -264,12 +290,20 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
             low_dets_.push_back((int)j);
     }
 
-    // 1. High-score detections against confirmed and lost tracks.
+    // 1. High-score detections against confirmed and lost tracks (those
+    //    lost for longer than lost_lifetime are gone, whatever lies where
+    //    they were).
     pool_tracks_.clear();
     for (size_t i = 0; i < tracks_.size(); i++)
-        if (tracks_[i].state != CT_TRACK_TENTATIVE)
+        if (tracks_[i].state != CT_TRACK_TENTATIVE &&
+            elapsed_s(t_us, tracks_[i].last_update_us) <= cfg_.lost_lifetime)
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
+    // 1b. Without mean shift to follow them, the tracks left try again
+    //     from where their detection last was: a person who stopped, or a
+    //     camera that jerked, leaves the prediction off.
+    if (cfg_.source == CT_SOURCE_DETECTIONS && !pixels)
+        recover(dets);
 
     // 2. Low-score detections continue tracks that were confirmed and not
     //    yet lost: a weak detection near where a person is expected.
@@ -299,13 +333,18 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
     }
 
+    scene_.learn(dt);
     age_unmatched(t_us, image);
-    // New tracks from the high-score detections nobody claimed. The first
-    // step confirms them at once: there is no earlier frame to wait for.
+    // New tracks from the high-score detections nobody claimed that reach
+    // start_score (a detector's boxes only: the pixels' candidates start
+    // at candidate_min_score). The first step confirms them at once: there
+    // is no earlier frame to wait for.
+    const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : cfg_.start_score;
     for (int j : pool_dets_) {
         if ((int)tracks_.size() >= cfg_.max_tracks)
             break;
-        start_track(dets[j], j, t_us, first);
+        if (dets[j].score >= start)
+            start_track(dets[j], j, t_us, first);
     }
     stage_ns_[CT_STAGE_LIFECYCLE] += sw.lap();
     if (pixels) {
@@ -333,10 +372,11 @@ void Engine::age_unmatched(int64_t t_us, ImageSize image)
             } else {
                 t.state = CT_TRACK_LOST;
                 double since = elapsed_s(t_us, t.last_update_us);
-                Box b = t.box();
+                // A person whose predicted box is more than half outside a
+                // known image has left it: the track ends, rather than
+                // coast out of sight.
                 bool outside = image.known() &&
-                    (b.left >= image.width || b.top >= image.height ||
-                     b.left + b.width <= 0 || b.top + b.height <= 0);
+                               inside_fraction(t.box(), image.width, image.height) < 0.5;
                 keep = since <= cfg_.lost_lifetime && !outside;
             }
         }
@@ -370,7 +410,19 @@ void Engine::report(int64_t t_us, ImageSize image)
         double since = elapsed_s(t_us, t.last_update_us);
         if (t.state == CT_TRACK_LOST && since > cfg_.report_lost_time)
             continue;
+        if (t.state == CT_TRACK_LOST && cfg_.report_lost_sd > 0 &&
+            !hidden_in_view(t, (size_t)(&t - tracks_.data())))
+            continue;
         Box b = t.box();
+        if (t.last_update_us == t_us && !t.followed) {
+            // Where the scene moves less predictably than the filter
+            // assumes, its estimate lags: the box goes toward the detection.
+            const double f = scene_.follow();
+            b.left += f * (t.seen.left - b.left);
+            b.top += f * (t.seen.top - b.top);
+            b.width += f * (t.seen.width - b.width);
+            b.height += f * (t.seen.height - b.height);
+        }
         if (cfg_.clip_boxes && image.known()) {
             double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
             double x1 = std::min<double>(image.width, b.left + b.width);

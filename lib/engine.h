@@ -13,6 +13,7 @@
 #include "gate.h"
 #include "meanshift.h"
 #include "planes.h"
+#include "scene.h"
 #include "templates.h"
 #include "track.h"
 
@@ -71,6 +72,13 @@ private:
     // Tracks no detection updated: lost, or removed when tentative, past
     // their lifetime or outside the image.
     void age_unmatched(int64_t t_us, ImageSize image);
+    // Matches the tracks left in pool_tracks_ to the detections left in
+    // pool_dets_ by their last detection's box instead of the prediction.
+    void recover(const ct_detection *dets);
+    // Whether a lost track is likely where predicted and not seen for a
+    // reason: another track covers it, and its centre is known to within
+    // report_lost_sd of its size.
+    bool hidden_in_view(const Track &t, size_t i) const;
     void report(int64_t t_us, ImageSize image);
 
     uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
@@ -92,6 +100,7 @@ private:
     MeanShift ms_;
     MeanShiftParams ms_params_;
     int min_rho_ = 0;         // mean_shift_min_similarity in Q16
+    SceneMotion scene_;
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;

@@ -35,6 +35,14 @@ struct Axis {
         p11 = n11;
     }
 
+    // The normalized innovation squared of a measurement z: about 1 on
+    // average while the filter's noises describe the motion it sees.
+    double nis(double z, double meas_sd) const
+    {
+        const double e = z - x;
+        return e * e / (p00 + meas_sd * meas_sd);
+    }
+
     void update(double z, double meas_sd)
     {
         double s = p00 + meas_sd * meas_sd;

@@ -60,6 +60,7 @@ void Track::start(const ct_detection &d, double detection_noise, int index, int6
     hits = 1;
     last_update_us = t_us;
     seen_h = d.height;
+    seen = det_box(d);
     start_x = d.left + d.width / 2.0;
     start_y = d.top + d.height / 2.0;
     det_index = index;
@@ -82,6 +83,12 @@ void Track::predict(double dt, double motion_noise)
     cue = box();
 }
 
+double Track::centre_nis(const ct_detection &d, double detection_noise) const
+{
+    const double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    return 0.5 * (cx.nis(d.left + d.width / 2.0, sd) + cy.nis(d.top + d.height / 2.0, sd));
+}
+
 void Track::correct(const ct_detection &d, double detection_noise, int index, int64_t t_us)
 {
     double sd = detection_noise * std::max<double>(d.height, kMinSide);
@@ -92,6 +99,7 @@ void Track::correct(const ct_detection &d, double detection_noise, int index, in
     hits++;
     last_update_us = t_us;
     seen_h = d.height;
+    seen = det_box(d);
     if (std::hypot(d.left + d.width / 2.0 - start_x, d.top + d.height / 2.0 - start_y) >
         0.5 * d.height)
         moved = true;

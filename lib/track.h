@@ -39,6 +39,7 @@ struct Track {
     int age = 0, hits = 0;
     int64_t last_update_us = 0;
     float seen_h = 0; // the height of the last detection
+    Box seen{0, 0, 0, 0}; // the last detection's box
     // Where it started, and whether it has since moved half its height: a
     // track that never moved may be a ghost of the background model.
     double start_x = 0, start_y = 0;
@@ -65,6 +66,9 @@ struct Track {
     // Predicts dt seconds ahead (acceleration noise motion_noise box heights
     // per second squared) and forgets the last step's match and mean shift.
     void predict(double dt, double motion_noise);
+    // The centre's normalized innovation squared for detection d (the mean
+    // of both axes), before correct().
+    double centre_nis(const ct_detection &d, double detection_noise) const;
     // Corrects the motion model by detection d, and records the hit.
     void correct(const ct_detection &d, double detection_noise, int index, int64_t t_us);
     // Corrects the motion model by where mean shift followed the person

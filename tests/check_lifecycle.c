@@ -53,12 +53,14 @@ START_TEST(first_step_confirms)
 END_TEST
 
 /* A person missed by the detector for less than lost_lifetime keeps the
- * same id; the gap is reported as lost for report_lost_time at most. */
+ * same id; the gap is reported as lost for report_lost_time at most (with
+ * report_lost_sd 0, whether or not anything hides them). */
 START_TEST(track_survives_a_gap)
 {
     ct_config cfg = test_config();
     cfg.lost_lifetime = 1.0;
     cfg.report_lost_time = 0.15;
+    cfg.report_lost_sd = 0;
     ct_tracker *t = test_tracker(&cfg);
     ct_track out[64];
     const int64_t step = SEC / 10;
@@ -87,6 +89,43 @@ START_TEST(track_survives_a_gap)
         }
     }
     ct_tracker_destroy(t);
+}
+END_TEST
+
+/* With report_lost_sd (the default), a lost track is reported only while
+ * another track hides it: a person missed in the open is not reported, one
+ * who walks behind another is, predicted, for a few steps. */
+START_TEST(lost_tracks_reported_while_hidden)
+{
+    const int64_t step = SEC / 25;
+    for (int hidden = 0; hidden < 2; hidden++) {
+        ct_tracker *t = test_tracker(NULL);
+        ct_track out[64];
+        int reported_lost = 0;
+        for (int k = 0; k < 40; k++) {
+            /* B walks right at 50 px/s; A stands where B is at k = 25. */
+            ct_detection d[2] = {test_det(50 + 2.0f * k, 100, 40, 80, 0.9f),
+                                 test_det(100, 100, 40, 80, 0.9f)};
+            const bool b_seen = k < 20;
+            size_t nd = hidden ? 2 : 1;
+            const ct_detection *dets = d;
+            if (!b_seen) {
+                dets = d + 1;
+                nd = hidden ? 1 : 0;
+            }
+            const size_t n = test_step(t, k * step, dets, nd, out);
+            for (size_t i = 0; i < n; i++)
+                if (out[i].state == CT_TRACK_LOST) {
+                    reported_lost++;
+                    ck_assert_int_eq(out[i].detection_index, -1);
+                }
+        }
+        if (hidden)
+            ck_assert_int_ge(reported_lost, 3);
+        else
+            ck_assert_int_eq(reported_lost, 0);
+        ct_tracker_destroy(t);
+    }
 }
 END_TEST
 
@@ -212,6 +251,48 @@ START_TEST(clipping_and_image_exit)
 }
 END_TEST
 
+/* The live tracks (tentative, confirmed, lost). */
+static uint64_t live_tracks(const ct_tracker *t)
+{
+    ct_stats st;
+    st.size = sizeof st;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
+    return st.live_tracks;
+}
+
+/* A person walks out of a 640 x 480 image to the right at 200 pixels a
+ * second (8 a frame at 25 frames/s): once the detections stop, the track
+ * ends as soon as its predicted box is more than half outside the image,
+ * rather than coast out of it (whole boxes outside took 5 steps, the lost
+ * lifetime 75). With the image's size unknown it coasts. */
+START_TEST(leaving_the_image_ends_the_track)
+{
+    for (int known = 0; known < 2; known++) {
+        ct_tracker *t = test_tracker(NULL);
+        ct_detection d = test_det(400, 200, 40, 80, 0.9f);
+        int64_t us = 0;
+        for (; d.left + d.width <= 640; d.left += 8, us += 40000) {
+            ct_frame f = test_frame(us, known ? 640 : 0, known ? 480 : 0);
+            ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_OK);
+        }
+        /* The last detection's box ended at the edge: 20 pixels more of
+         * motion (2.5 steps) put half the box outside. */
+        int steps = 0;
+        while (live_tracks(t) > 0 && steps < 100) {
+            ct_frame f = test_frame(us, known ? 640 : 0, known ? 480 : 0);
+            ck_assert_int_eq(ct_tracker_feed(t, &f, NULL, 0), CT_OK);
+            us += 40000;
+            steps++;
+        }
+        if (known)
+            ck_assert_int_eq(steps, 3);
+        else
+            ck_assert_int_gt(steps, 50); /* lost_lifetime: 3 s */
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
 START_TEST(max_tracks_bounds_live_tracks)
 {
     ct_config cfg = test_config();
@@ -239,6 +320,8 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, low_scores_continue_but_do_not_start);
     tcase_add_test(tc, clipping_and_image_exit);
     tcase_add_test(tc, max_tracks_bounds_live_tracks);
+    tcase_add_test(tc, leaving_the_image_ends_the_track);
+    tcase_add_test(tc, lost_tracks_reported_while_hidden);
     suite_add_tcase(s, tc);
     return s;
 }

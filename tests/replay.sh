@@ -1,9 +1,9 @@
 #!/bin/sh
-# Golden replay on real data: the MOTChallenge public detections of
-# PETS09-S2L1 and TUD-Campus through ct-track, detections only and with the
-# frames (mean shift), scored by py-motmetrics against the ground truth. The
-# thresholds sit just under the scores in docs/results.md, so a change that
-# costs accuracy fails here.
+# Golden replay on real data: the MOTChallenge public detections of every
+# sequence through ct-track, detections only, and PETS09-S2L1 and TUD-Campus
+# with their frames too (mean shift, DDIS, the pixels alone), scored by
+# py-motmetrics against the ground truth. The thresholds sit just under the
+# scores in docs/results.md, so a change that costs accuracy fails here.
 #   replay.sh CT_TRACK DATA_DIR
 set -eu
 ct_track=$1
@@ -31,18 +31,44 @@ check() { # NAME SEQ MIN_MOTA MIN_IDF1 CT_TRACK_ARGS... (DETS in them: the publi
     "$py" -m cteval.score "$data/$seq/gt/gt.txt" "$tmp/$seq.txt" \
         --min-mota "$mota" --min-idf1 "$idf1" || fail=1
 }
-check "PETS09-S2L1, detections" PETS09-S2L1 66.5 64.5 DETS -s 768x576 -r 7
-check "TUD-Campus, detections" TUD-Campus 68.5 80.0 DETS -s 640x480 -r 25
+check "PETS09-S2L1, detections" PETS09-S2L1 66.5 66.0 DETS -s 768x576 -r 7
+check "TUD-Campus, detections" TUD-Campus 70.5 80.5 DETS -s 640x480 -r 25
+check "ADL-Rundle-8, detections" ADL-Rundle-8 27.5 37.5 DETS -s 1920x1080 -r 30
+check "ETH-Bahnhof, detections" ETH-Bahnhof 38.0 51.0 DETS -s 640x480 -r 14
+check "KITTI-13, detections" KITTI-13 20.0 48.5 DETS -s 1242x375 -r 10
+check "Venice-2, detections" Venice-2 15.0 43.0 DETS -s 1920x1080 -r 30
+
+# Scores on any scale: PETS09-S2L1's detections with a low-score jitter box
+# beside each (score uniform in [0, 0.5), box moved and resized by up to a
+# tenth), as a detector's raw output before a 0.5 cut has. The second pass
+# lets them continue tracks and never start one: MOTA holds, IDF1 loses
+# under 3 points (docs/tuning.md).
+"$py" - "$data/PETS09-S2L1/det/det.txt" "$tmp/jitter.txt" <<'PY'
+import random, sys
+rng = random.Random(2026)
+with open(sys.argv[1]) as f, open(sys.argv[2], "w") as out:
+    for line in f:
+        v = [float(x) for x in line.split(",")]
+        out.write(line)
+        w, h = v[4], v[5]
+        box = [v[2] + rng.uniform(-0.1, 0.1) * w, v[3] + rng.uniform(-0.1, 0.1) * h,
+               w * rng.uniform(0.9, 1.1), h * rng.uniform(0.9, 1.1)]
+        out.write("%d,-1,%.3f,%.3f,%.3f,%.3f,%.4f,-1,-1,-1\n" % (v[0], *box, rng.uniform(0, 0.5)))
+PY
+"$ct_track" -q -d "$tmp/jitter.txt" -s 768x576 -r 7 -o "$tmp/jitter-tracks.txt"
+printf 'PETS09-S2L1, detections with low-score jitter boxes: '
+"$py" -m cteval.score "$data/PETS09-S2L1/gt/gt.txt" "$tmp/jitter-tracks.txt" \
+    --min-mota 66.0 --min-idf1 63.0 || fail=1
 
 # With the frames: TUD-Campus's are in the tree, PETS09-S2L1's are fetched
 # (once, cached) from Debian's opencv-doc package.
 ffmpeg -v error -i "$data/TUD-Campus/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/tud.y4m"
-check "TUD-Campus, detections + pixels" TUD-Campus 68.0 76.5 DETS "$tmp/tud.y4m"
+check "TUD-Campus, detections + pixels" TUD-Campus 68.5 77.5 DETS "$tmp/tud.y4m"
 pets=$("$here/../scripts/fetch-pets09.sh")
-check "PETS09-S2L1, detections + pixels" PETS09-S2L1 68.5 74.5 DETS "$pets"
+check "PETS09-S2L1, detections + pixels" PETS09-S2L1 68.5 77.0 DETS "$pets"
 check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 68.0 73.0 \
     DETS -p verify_detections=1 "$pets"
 # From the pixels alone (docs/notes/pixels.md): no detections.
-check "PETS09-S2L1, pixels only" PETS09-S2L1 64.5 75.0 -r 7 "$pets"
-check "TUD-Campus, pixels only" TUD-Campus 26.5 49.5 -r 25 "$tmp/tud.y4m"
+check "PETS09-S2L1, pixels only" PETS09-S2L1 65.0 75.5 -r 7 "$pets"
+check "TUD-Campus, pixels only" TUD-Campus 30.0 50.5 -r 25 "$tmp/tud.y4m"
 exit $fail

@@ -43,6 +43,8 @@ static const param_def params[] = {
     {"reid_max_speed", 'f', offsetof(ct_config, reid_max_speed), "re-identification reach, box heights/s"},
     {"candidate_min_score", 'f', offsetof(ct_config, candidate_min_score), "pixels only: vote that starts tracks"},
     {"verify_detections", 'i', offsetof(ct_config, verify_detections), "1: the contour template checks each detection"},
+    {"start_score", 'f', offsetof(ct_config, start_score), "detections at or above may start tracks"},
+    {"report_lost_sd", 'f', offsetof(ct_config, report_lost_sd), "lost tracks reported only when hidden and this well predicted (0: all)"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)

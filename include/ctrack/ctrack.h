@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 8
+#define CT_VERSION_MINOR 9
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -113,9 +113,10 @@ typedef struct ct_config {
     /* Seconds a confirmed track that lost its detections is kept, predicted
      * by its motion model, before it is removed. */
     double lost_lifetime;
-    /* Seconds during which a lost track is still reported by
-     * ct_tracker_get_tracks() (its box predicted); 0 reports only tracks
-     * that a detection updated this step. At most lost_lifetime. */
+    /* Seconds during which a lost track may still be reported by
+     * ct_tracker_get_tracks() (its box predicted; report_lost_sd narrows
+     * which); 0 reports only tracks that a detection updated this step. At
+     * most lost_lifetime. */
     double report_lost_time;
     /* Motion model: standard deviation of the acceleration of the box centre
      * and size, in box heights per second squared. */
@@ -183,6 +184,21 @@ typedef struct ct_config {
      * ct_tracker_get_candidates() then returns one vote per detection, in
      * their order. 0 (the default) does not verify. */
     int32_t verify_detections;
+
+    /* Added in 0.9.0. */
+
+    /* With source CT_SOURCE_DETECTIONS, detections scoring at least this
+     * (and high_score) may start a track; those between high_score and this
+     * are matched first and continue tracks, but start none. In [0, 1]; at
+     * or under high_score, every high-score detection may start one. */
+    float start_score;
+    /* Non-zero: a lost track is reported (within report_lost_time) only
+     * while its box is likely right and its person hidden: another track
+     * covers a fifth of its box, and the standard deviation of its
+     * predicted centre is at most this many box widths across and box
+     * heights down. 0 reports every lost track within report_lost_time.
+     * In [0, 10]. */
+    float report_lost_sd;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the

@@ -9,7 +9,7 @@ ABI_VERSION = 1
 # The version of include/ctrack/ctrack.h these mirrors follow, and the Python
 # package's (python/pyproject.toml); test_abi.py checks it against the
 # library's.
-VERSION = "0.8.0"
+VERSION = "0.9.0"
 
 OK = 0
 ERROR_INVALID_ARGUMENT = -1
@@ -66,6 +66,8 @@ class Config(C.Structure):
         ("reid_max_speed", C.c_float),
         ("candidate_min_score", C.c_float),
         ("verify_detections", C.c_int32),
+        ("start_score", C.c_float),
+        ("report_lost_sd", C.c_float),
     ]
 
 

@@ -23,6 +23,8 @@ int main(void)
     FIELD(ct_config, appearance_weight); FIELD(ct_config, reid_min_similarity);
     FIELD(ct_config, reid_max_speed); FIELD(ct_config, candidate_min_score);
     FIELD(ct_config, verify_detections);
+    FIELD(ct_config, start_score);
+    FIELD(ct_config, report_lost_sd);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
