@@ -18,13 +18,14 @@ import tempfile
 import numpy as np
 
 from cteval import peers
-from cteval.data import (DATA, TOP, cache_dir, ctrack_version, load_dets, run_ctrack, seqinfo,
-                         subsampled, video, write_rows)
-from cteval.score import score
+from cteval.data import (DATA, TOP, cache_dir, ctrack_version, has_video, load_dets, run_ctrack,
+                         seqinfo, sequences, subsampled, video, write_rows)
+from cteval.score import score, score_overall
 
 
 def trackeval_scores(seqs, trackers_dir, names):
-    """HOTA, MOTA and IDF1 from TrackEval for every tracker and sequence."""
+    """HOTA, MOTA and IDF1 from TrackEval for every tracker and sequence, and
+    over all of them together (key "COMBINED_SEQ")."""
     import trackeval
     ev_cfg = trackeval.Evaluator.get_default_eval_config()
     ev_cfg.update({"USE_PARALLEL": False, "PRINT_RESULTS": False, "PRINT_CONFIG": False,
@@ -42,7 +43,7 @@ def trackeval_scores(seqs, trackers_dir, names):
         [trackeval.datasets.MotChallenge2DBox(ds_cfg)], metrics)
     out = {}
     for name in names:
-        for s in seqs:
+        for s in list(seqs) + ["COMBINED_SEQ"]:
             r = res["MotChallenge2DBox"][name][s]["pedestrian"]
             out[(name, s)] = {"HOTA": 100 * float(np.mean(r["HOTA"]["HOTA"])),
                               "MOTA": 100 * float(r["CLEAR"]["MOTA"]),
@@ -67,6 +68,15 @@ TRACKERS = [
     ("opencv-csrt", "OpenCV CSRT per person + IoU", "detections + pixels"),
     ("mog2-iou", "OpenCV MOG2 + blobs + IoU tracker", "pixels"),
 ]
+# ctrack's runs: (pixels, detections, parameters).
+CTRACK_RUNS = {
+    "ctrack-det": (False, True, []),
+    "ctrack-detpix": (True, True, []),
+    "ctrack-detpix-noms": (True, True, ["mean_shift=0"]),
+    "ctrack-detpix-noapp": (True, True, ["appearance=0"]),
+    "ctrack-detpix-verify": (True, True, ["verify_detections=1"]),
+    "ctrack-pix": (True, False, []),
+}
 # OpenCV's single-object trackers, one per person (peers.OpenCVTrackers).
 OPENCV_TRACKERS = {"opencv-kcf": "KCF", "opencv-csrt": "CSRT"}
 
@@ -75,64 +85,76 @@ PEERS_ON_DETECTIONS = {"bytetrack": peers.bytetrack, "sort": peers.sort, "ocsort
                        "norfair": peers.norfair_iou}
 
 
+def run_tracker(build, key, seq, info, y4m, dets, path):
+    """One tracker of TRACKERS over one sequence into path; returns its
+    time in seconds."""
+    n, fps = info["frames"], info["fps"]
+    if key in CTRACK_RUNS:
+        pixels, detections, params = CTRACK_RUNS[key]
+        return run_ctrack(build, seq, info, y4m, path, pixels=pixels, detections=detections,
+                          params=params)
+    if key in PEERS_ON_DETECTIONS:
+        rows, seconds = PEERS_ON_DETECTIONS[key](dets, n, fps)
+    elif key in OPENCV_TRACKERS:
+        rows, seconds = peers.opencv_trackers(OPENCV_TRACKERS[key], y4m, dets, n)
+    else:
+        rows, seconds = peers.mog2_iou(y4m, n)
+    write_rows(path, rows)
+    return seconds
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
     ap.add_argument("--out", default=os.path.join(TOP, "docs"))
     a = ap.parse_args()
-    seqs = ["PETS09-S2L1", "TUD-Campus"]
+    seqs = sequences()
     tmp = tempfile.mkdtemp(prefix="ct-eval-")
     results = []
     for seq in seqs:
         info = seqinfo(seq)
-        y4m = video(seq)
+        y4m = video(seq) if has_video(seq) else None
         dets = load_dets(seq)
-        n, fps = info["frames"], info["fps"]
         for key, label, mode in TRACKERS:
+            if y4m is None and mode != "detections":
+                continue
             d = os.path.join(tmp, key, "data")
             os.makedirs(d, exist_ok=True)
             path = os.path.join(d, seq + ".txt")
             print("eval: %s: %s (%s)" % (seq, label, mode), file=sys.stderr, flush=True)
-            if key == "ctrack-det":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=False)
-            elif key == "ctrack-detpix":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True)
-            elif key == "ctrack-detpix-noms":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
-                                     params=["mean_shift=0"])
-            elif key == "ctrack-detpix-verify":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
-                                     params=["verify_detections=1"])
-            elif key == "ctrack-pix":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True, detections=False)
-            elif key == "ctrack-detpix-noapp":
-                seconds = run_ctrack(a.build, seq, info, y4m, path, pixels=True,
-                                     params=["appearance=0"])
-            elif key in PEERS_ON_DETECTIONS:
-                rows, seconds = PEERS_ON_DETECTIONS[key](dets, n, fps)
-                write_rows(path, rows)
-            elif key in OPENCV_TRACKERS:
-                rows, seconds = peers.opencv_trackers(OPENCV_TRACKERS[key], y4m, dets, n)
-                write_rows(path, rows)
-            else:
-                rows, seconds = peers.mog2_iou(y4m, n)
-                write_rows(path, rows)
+            seconds = run_tracker(a.build, key, seq, info, y4m, dets, path)
             r = score(os.path.join(DATA, seq, "gt", "gt.txt"), path)
             r.update({"sequence": seq, "key": key, "tracker": label, "input": mode,
-                      "seconds": seconds, "fps": n / seconds if seconds > 0 else float("inf"),
-                      "fps_native": fps})
+                      "seconds": seconds,
+                      "fps": info["frames"] / seconds if seconds > 0 else float("inf"),
+                      "fps_native": info["fps"]})
             results.append(r)
     lower = lower_rates(a.build, seqs, tmp)
-    te = trackeval_scores(seqs, tmp, [k for k, _, _ in TRACKERS])
+    # TrackEval wants every tracker on every sequence it is given: those on
+    # detections over all of them (and their combined scores), the others
+    # over the sequences with a video.
+    det_keys = [k for k, _, m in TRACKERS if m == "detections"]
+    video_seqs = [s for s in seqs if has_video(s)]
+    te = trackeval_scores(seqs, tmp, det_keys)
+    te.update(trackeval_scores(video_seqs, tmp, [k for k, _, m in TRACKERS if m != "detections"]))
     worst = 0.0
     for r in results:
         t = te[(r["key"], r["sequence"])]
         r["HOTA"] = t["HOTA"]
         r["trackeval_MOTA"], r["trackeval_IDF1"] = t["MOTA"], t["IDF1"]
         worst = max(worst, abs(t["MOTA"] - r["MOTA"]), abs(t["IDF1"] - r["IDF1"]))
-    write_report(a.out, results, seqs, worst, lower)
+    overall = []
+    for key, label, mode in TRACKERS:
+        if mode != "detections":
+            continue
+        r = score_overall([(os.path.join(DATA, s, "gt", "gt.txt"),
+                            os.path.join(tmp, key, "data", s + ".txt")) for s in seqs])
+        r.update({"key": key, "tracker": label, "input": mode,
+                  "HOTA": te[(key, "COMBINED_SEQ")]["HOTA"]})
+        overall.append(r)
+    write_report(a.out, results, seqs, worst, lower, overall)
     with open(os.path.join(a.build, "eval.json"), "w") as f:
-        json.dump(results, f, indent=1)
+        json.dump({"sequences": results, "overall": overall, "lower_rates": lower}, f, indent=1)
     print("eval: wrote %s/results.md, %s/img/scores.png, %s/img/rates.png, %s/eval.json"
           % (a.out, a.out, a.out, a.build), file=sys.stderr)
 
@@ -153,23 +175,22 @@ LOWER_RATE_STEPS = (2, 3)
 def lower_rates(build, seqs, tmp):
     """Every sequence at a half and a third of its frame rate (a camera that
     keeps every k-th frame), from each offset: frames 1, 3, 5, ... and
-    2, 4, 6, ... at half the rate. ctrack in each input mode and two peers,
-    scored with py-motmetrics against the ground truth of the frames kept.
-    One offset alone is a small sample: on TUD-Campus a tracker's IDF1 moves
-    by up to 10 points from one offset to the other. Returns one result per
-    sequence, step and tracker, with the scores of each offset."""
+    2, 4, 6, ... at half the rate. ctrack in each input mode the sequence
+    has and two peers, scored with py-motmetrics against the ground truth of
+    the frames kept. One offset alone is a small sample: on TUD-Campus a
+    tracker's IDF1 moves by up to 10 points from one offset to the other.
+    Returns one result per sequence, step and tracker, with the scores of
+    each offset."""
     results = []
     for seq in seqs:
         info = seqinfo(seq)
-        # Before 0.7.1 the half-rate video was cached; it is made in tmp now.
-        stale = os.path.join(cache_dir(), seq.lower() + "-half.y4m")
-        if os.path.exists(stale):
-            os.remove(stale)
+        src = video(seq) if has_video(seq) else None
+        trackers = [t for t in LOWER_RATES if src is not None or t[2] == "detections"]
         for k in LOWER_RATE_STEPS:
             runs = {}
             for offset in range(k):
-                y4m, gt, det, sub = subsampled(seq, info, video(seq), k, offset, tmp)
-                for key, label, mode, params in LOWER_RATES:
+                y4m, gt, det, sub = subsampled(seq, info, src, k, offset, tmp)
+                for key, label, mode, params in trackers:
                     print("eval: %s at 1/%d of its frame rate, from frame %d: %s (%s)"
                           % (seq, k, offset + 1, label, mode), file=sys.stderr, flush=True)
                     path = os.path.join(tmp, "rate-%s-%s-%dof%d.txt" % (key, seq, offset + 1, k))
@@ -181,8 +202,9 @@ def lower_rates(build, seqs, tmp):
                         run_ctrack(build, seq, sub, y4m, path, pixels=mode != "detections",
                                    params=params, detections=mode != "pixels", det=det)
                     runs.setdefault(key, []).append(score(gt, path))
-                os.remove(y4m)
-            for key, label, mode, _ in LOWER_RATES:
+                if y4m:
+                    os.remove(y4m)
+            for key, label, mode, _ in trackers:
                 results.append({"sequence": seq, "step": k, "fps": info["fps"] / k, "key": key,
                                 "tracker": label, "input": mode, "runs": runs[key]})
     return results
@@ -199,6 +221,9 @@ def plot_rates(plt, path, results, seqs, lower):
     third (the mean over the offsets, the bar from the lowest to the
     highest)."""
     fig, axes = plt.subplots(len(seqs), 2, figsize=(11, 4.2 * len(seqs)))
+    # One colour a tracker in every panel, and one legend entry each.
+    colour = {key: "C%d" % i for i, (key, _, _, _) in enumerate(LOWER_RATES)}
+    legend = {}
     for row, seq in zip(axes, seqs):
         for key, label, mode, _ in LOWER_RATES:
             native = [r for r in results if r["sequence"] == seq and r["key"] == key]
@@ -214,33 +239,36 @@ def plot_rates(plt, path, results, seqs, lower):
                                          for r in lows]
                 lo = [0] + [mean[i + 1] - min(x[m] for x in r["runs"]) for i, r in enumerate(lows)]
                 hi = [0] + [max(x[m] for x in r["runs"]) - mean[i + 1] for i, r in enumerate(lows)]
-                ax.errorbar(fps, mean, yerr=[lo, hi], linestyle=style, marker="o", capsize=3,
-                            label=name)
+                line = ax.errorbar(fps, mean, yerr=[lo, hi], linestyle=style, marker="o",
+                                   capsize=3, color=colour[key], label=name)
+                legend.setdefault(name, line)
         for ax, m in zip(row, ("MOTA", "IDF1")):
             ax.set_title("%s: %s" % (seq, m))
             ax.set_xlabel("frames per second")
             ax.set_ylabel("%s (%%)" % m)
             ax.grid(alpha=0.3)
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8)
+    fig.legend(list(legend.values()), list(legend.keys()), loc="lower center", ncol=3,
+               fontsize=8)
     fig.suptitle("Scores against the frame rate (every k-th frame kept; mean and range "
                  "over the offsets)")
-    fig.tight_layout(rect=(0, 0.06, 1, 1))
+    fig.tight_layout(rect=(0, 0.03, 1, 0.985))
     fig.savefig(path, dpi=100)
     plt.close(fig)
 
 
-def write_report(out, results, seqs, worst, lower):
+def write_report(out, results, seqs, worst, lower, overall):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     os.makedirs(os.path.join(out, "img"), exist_ok=True)
-    # One sequence a row, so that every tracker's label has room.
-    fig, axes = plt.subplots(len(seqs), 1, figsize=(12, 4.6 * len(seqs)), sharey=True)
+    # All the sequences together first, then one sequence a row, so that
+    # every tracker's label has room.
+    panels = [("Over all %d sequences, detections only" % len(seqs), overall)]
+    panels += [(seq, [r for r in results if r["sequence"] == seq]) for seq in seqs]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(12, 4.0 * len(panels)), sharey=True)
     measures = ["HOTA", "MOTA", "IDF1"]
-    for ax, seq in zip(axes, seqs):
-        rows = [r for r in results if r["sequence"] == seq]
+    for ax, (title, rows) in zip(axes, panels):
         x = np.arange(len(rows))
         for i, m in enumerate(measures):
             # Bars stop at -20 so that one very negative MOTA does not squash
@@ -250,21 +278,21 @@ def write_report(out, results, seqs, worst, lower):
         ax.set_xticks(x, ["%s\n(%s)" % (r["tracker"].split(" (")[0], r["input"])
                           for r in rows], fontsize=7, rotation=25, ha="right",
                       rotation_mode="anchor")
-        ax.set_title(seq)
+        ax.set_title(title)
         ax.axhline(0, color="black", linewidth=0.5)
     for ax in axes:
         ax.set_ylabel("score (%)")
     axes[0].legend(loc="upper right", fontsize=8)
     fig.suptitle("ctrack and its peers, MOTChallenge 2015 public detections (online)")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.985))
     fig.savefig(os.path.join(out, "img", "scores.png"), dpi=110)
     plot_rates(plt, os.path.join(out, "img", "rates.png"), results, seqs, lower)
 
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("# Results\n\n")
         f.write("Made by `make eval` (`eval/eval.py`) on %s, ctrack %s. Every tracker "
-                "runs online on the same input; one set of defaults serves both "
-                "sequences. HOTA from TrackEval 1.3.0; MOTA, IDF1, ID switches, "
+                "runs online on the same input; one set of defaults serves every "
+                "sequence. HOTA from TrackEval 1.3.0; MOTA, IDF1, ID switches, "
                 "precision, recall and the barycenter error from py-motmetrics 1.4.0 "
                 "(IoU >= 0.5). TrackEval's MOTA and IDF1 agree with py-motmetrics' "
                 "within %.2f points here. Time is wall time for the whole sequence "
@@ -272,6 +300,17 @@ def write_report(out, results, seqs, worst, lower):
                 "their update calls only).\n\n"
                 % (datetime.date.today().isoformat(), ctrack_version(), worst))
         f.write("![scores](img/scores.png)\n\n")
+        f.write("## Over all %d sequences, detections only\n\n" % len(seqs))
+        f.write(OVERALL_HEAD)
+        f.write("| tracker | HOTA | MOTA | IDF1 | ID sw. | precision | recall | FP | FN "
+                "| MOTA above on |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in overall:
+            f.write("| %s | %.1f | %.1f | %.1f | %d | %.1f | %.1f | %d | %d | %s |\n"
+                    % (r["tracker"], r["HOTA"], r["MOTA"], r["IDF1"], r["IDsw"],
+                       r["precision"], r["recall"], r["FP"], r["FN"],
+                       beaten_on(results, seqs, "ctrack-det", r["key"])))
+        f.write("\n")
         for seq in seqs:
             info = seqinfo(seq)
             f.write("## %s (%d frames, %dx%d, %g fps)\n\n" % (
@@ -299,6 +338,24 @@ def write_report(out, results, seqs, worst, lower):
                        sum(x["IDsw"] for x in r["runs"])))
         f.write("\n")
         f.write(NOTES)
+
+
+def beaten_on(results, seqs, ours, peer):
+    """On how many sequences ctrack's MOTA is above the peer's (detections
+    only), for the peers' rows of the overall table."""
+    if peer == ours:
+        return ""
+    mota = {(r["key"], r["sequence"]): r["MOTA"] for r in results}
+    won = sum(mota[(ours, s)] > mota[(peer, s)] for s in seqs)
+    return "%d of %d" % (won, len(seqs))
+
+
+OVERALL_HEAD = """Every sequence's events pooled (py-motmetrics' OVERALL; TrackEval's
+combined HOTA), as MOTChallenge sums a benchmark: the large sequences
+weigh most. The last column counts the sequences on which ctrack's MOTA is
+above the peer's.
+
+"""
 
 
 LOWER_RATES_HEAD = """## At lower frame rates

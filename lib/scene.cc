@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace ctrack {
 
 namespace {
 
 // How fast the scale follows the innovations, in seconds.
-constexpr double kTimeConstant = 0.3;
+constexpr double kTimeConstantDefault = 0.3;
 // One innovation counts at most this much (a wrong match, a person who
 // turns): about three standard deviations.
 constexpr double kMaxNis = 9.0;
@@ -16,7 +17,22 @@ constexpr double kMaxNis = 9.0;
 constexpr double kMaxScale = 900.0;
 // The scale's excess over 1 at which the reported box goes halfway from the
 // estimate to the detection.
-constexpr double kFollowHalf = 20.0;
+constexpr double kFollowHalfDefault = 20.0;
+
+#ifdef CT_TUNING
+// A tuning build (meson -Dtuning=true, never shipped) reads the two from the
+// environment, for the sweeps of docs/tuning.md.
+double tunable(const char *name, double value)
+{
+    const char *s = std::getenv(name);
+    return s ? std::atof(s) : value;
+}
+const double kTimeConstant = tunable("CTRACK_SCENE_TIME", kTimeConstantDefault);
+const double kFollowHalf = tunable("CTRACK_SCENE_FOLLOW", kFollowHalfDefault);
+#else
+constexpr double kTimeConstant = kTimeConstantDefault;
+constexpr double kFollowHalf = kFollowHalfDefault;
+#endif
 
 } // namespace
 

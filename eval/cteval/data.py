@@ -22,6 +22,19 @@ def seqinfo(seq, data=DATA):
             "width": int(s["imWidth"]), "height": int(s["imHeight"])}
 
 
+def sequences(data=DATA):
+    """Every sequence of the data folder (a folder with a seqinfo.ini), by
+    name."""
+    return sorted(s for s in os.listdir(data)
+                  if os.path.exists(os.path.join(data, s, "seqinfo.ini")))
+
+
+def has_video(seq):
+    """Whether the sequence's frames can be had: PETS09-S2L1's from Debian's
+    opencv-doc, the others' from a video.mp4 beside their ground truth."""
+    return seq == "PETS09-S2L1" or os.path.exists(os.path.join(DATA, seq, "video.mp4"))
+
+
 def cache_dir():
     """Where decoded videos are kept: $CT_CACHE, as scripts/fetch-pets09.sh."""
     d = os.environ.get("CT_CACHE") or os.path.join(

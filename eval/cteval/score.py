@@ -31,15 +31,11 @@ def barycenter_error(acc, gt, ts):
     return float(100.0 * (((gx - tx) ** 2 + (gy - ty) ** 2) ** 0.5 / g["Height"].values).mean())
 
 
-def score(gt_path, tracks_path):
-    gt = mm.io.loadtxt(gt_path, fmt="mot15-2D", min_confidence=1)
-    ts = mm.io.loadtxt(tracks_path, fmt="mot15-2D")
-    acc = mm.utils.compare_to_groundtruth(gt, ts, "iou", distth=0.5)
-    mh = mm.metrics.create()
-    names = ["mota", "motp", "idf1", "num_switches", "precision", "recall",
-             "num_false_positives", "num_misses", "mostly_tracked", "num_unique_objects"]
-    s = mh.compute(acc, metrics=names, name="seq")
-    row = s.loc["seq"]
+NAMES = ["mota", "motp", "idf1", "num_switches", "precision", "recall",
+         "num_false_positives", "num_misses", "mostly_tracked", "num_unique_objects"]
+
+
+def _row(row):
     return {
         "MOTA": 100.0 * float(row["mota"]),
         "IDF1": 100.0 * float(row["idf1"]),
@@ -50,8 +46,33 @@ def score(gt_path, tracks_path):
         "FN": int(row["num_misses"]),
         "MT": int(row["mostly_tracked"]),
         "GT": int(row["num_unique_objects"]),
-        "barycenter_error": barycenter_error(acc, gt, ts),
     }
+
+
+def _accumulate(gt_path, tracks_path):
+    gt = mm.io.loadtxt(gt_path, fmt="mot15-2D", min_confidence=1)
+    ts = mm.io.loadtxt(tracks_path, fmt="mot15-2D")
+    return mm.utils.compare_to_groundtruth(gt, ts, "iou", distth=0.5), gt, ts
+
+
+def score(gt_path, tracks_path):
+    """py-motmetrics' scores of one track file (IoU >= 0.5, ground-truth rows
+    with flag 0 dropped) and the paper's barycenter error."""
+    acc, gt, ts = _accumulate(gt_path, tracks_path)
+    s = mm.metrics.create().compute(acc, metrics=NAMES, name="seq")
+    r = _row(s.loc["seq"])
+    r["barycenter_error"] = barycenter_error(acc, gt, ts)
+    return r
+
+
+def score_overall(pairs):
+    """py-motmetrics' OVERALL over several sequences, [(gt, tracks), ...]:
+    every sequence's events pooled, as MOTChallenge sums them."""
+    accs = [_accumulate(g, t)[0] for g, t in pairs]
+    names = [str(i) for i in range(len(accs))]
+    s = mm.metrics.create().compute_many(accs, names=names, metrics=NAMES,
+                                         generate_overall=True)
+    return _row(s.loc["OVERALL"])
 
 
 def main():
