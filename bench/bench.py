@@ -22,7 +22,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
 from cteval import peers
-from cteval.data import cache_dir, load_dets, video
+from cteval.data import cache_dir, conditioned, load_dets, video
 from cteval.y4m import open_y4m
 
 DATA = os.path.join(TOP, "tests", "data", "mot15")
@@ -280,6 +280,20 @@ def main():
         "the prediction, following and scale) divided by the confirmed tracks it served, "
         "from `ct-track --stats` in the same runs.")
 
+    # 3a. Sensor noise (make eval's condition): the pixels-only pipeline must
+    # not slow down with a noisy mask.
+    noisy = conditioned("PETS09-S2L1", "sensor noise", tempfile.mkdtemp(prefix="ct-bench-"))[0]
+    warm(noisy)
+    wall_n, _, _ = best_of(reps, [ct, "-q", "-r", "7", "-o", "/dev/null", noisy])
+    mog_n = mog2_ms(noisy, 100 if a.quick else 300)
+    report["sensor_noise"] = {"pixels_fps": 795 / wall_n, "mog2_fps": 1e3 / mog_n}
+    say("")
+    say("With sensor noise (`noise=alls=14:allf=t`, make eval's condition) on the same "
+        "frames, pixels only: ct-track %.0f frames/s, MOG2 alone %.0f frames/s (%.2f ms): "
+        "%.1fx. On the clean frames: %.1fx."
+        % (795 / wall_n, 1e3 / mog_n, mog_n, (795 / wall_n) / (1e3 / mog_n),
+           whole["768x576"]["pixels_fps"] / whole["768x576"]["mog2_fps"]))
+
     # 3b. Following one person: OpenCV's single-object trackers beside mean
     # shift (opencv-contrib-python in the eval venv).
     ms_us = whole["768x576"]["mean_shift_us_per_person"]
@@ -300,6 +314,16 @@ def main():
     say("| ctrack mean shift | %.1f | 1.0x |" % ms_us)
     for kind, us_ in follow.items():
         say("| OpenCV %s | %.0f | %.0fx |" % (kind, us_, us_ / ms_us))
+
+    # 3c. Bounded work: a flood of overlapping detections (ct-bench).
+    flood = report["library"]["flood_ms"]
+    say("")
+    say("## Bounded work: a flood of overlapping detections")
+    say("")
+    say("One feed of overlapping detections (a detector without non-maximum suppression) "
+        "into a tracker holding 1,000 live tracks, median of 5 (ct-bench, one core, "
+        "`tests/flood.h`): 5,000 detections in %.1f ms, 50,000 in %.1f ms. The targets are "
+        "100 ms and 2 s (docs/API.md, \"Work per call\")." % (flood["5000"], flood["50000"]))
 
     # 4. Memory and allocations.
     r = lib["detections 768x576"]

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cmath>
 #include <cstring>
 
 #include "clock.h"
@@ -45,6 +46,11 @@ constexpr int kShadowLow = 8, kShadowHigh = 15, kShadowChroma = 8;
 // foreground whatever its brightness (a red shirt on grey stone).
 constexpr int kChromaForeground = 24;
 
+// Sensor noise, learnt from the frames (NoiseLevel): the decisions never
+// fall under these many standard deviations of the scene's noise, in luma
+// (V's floor) and in chroma (the colour test and the shadows' tolerance).
+constexpr double kLumaNoise = 5.0, kChromaNoise = 4.0, kShadowNoise = 1.0;
+
 // The model's update and test of one pixel, written once for T = int (one
 // pixel) and for T = a vector of 16-bit lanes (GCC and Clang vector
 // extensions: several pixels at once, on any target). A mask is non-zero
@@ -62,6 +68,10 @@ template <typename T> inline T step_toward(T m, T target, int step)
 struct Rates {
     int step; // levels a frame, for M, the chroma and V alike
     bool warm;
+    // This frame's decision levels: V's floor, and the chroma differences
+    // over which a pixel is foreground and under which a shadow keeps its
+    // colour.
+    int vmin, chroma_fg, shadow_chroma;
 };
 
 // Luma: M and V learn where `live` (the pixel is not frozen); returns the
@@ -72,7 +82,7 @@ template <typename T> inline T luma(T I, T &M, T &V, T live, const Rates &r)
     const T D = vabs(I - Mn);
     const T learn = live & ((D != splat<T>(0)) | splat<T>(r.warm ? -1 : 0));
     const T Vt = V + (splat<T>(kN) * D > V ? splat<T>(r.step) : splat<T>(-r.step));
-    V = learn ? vmin(splat<T>(kVMax), vmax(splat<T>(kVMin), Vt)) : V;
+    V = learn ? vmin(splat<T>(kVMax), vmax(splat<T>(r.vmin), Vt)) : V;
     M = Mn;
     return D > V;
 }
@@ -88,8 +98,8 @@ inline T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const Rates &r)
     const T fg = luma(I, M, V, live, r);
     const T shadow = fg & (I < M) & (splat<T>(16) * I >= splat<T>(kShadowLow) * M) &
                      (splat<T>(16) * I <= splat<T>(kShadowHigh) * M) &
-                     (dc <= splat<T>(kShadowChroma));
-    return shadow ? splat<T>(0) : fg | (dc > splat<T>(kChromaForeground));
+                     (dc <= splat<T>(r.shadow_chroma));
+    return shadow ? splat<T>(0) : fg | (dc > splat<T>(r.chroma_fg));
 }
 
 #if defined(__GNUC__)
@@ -113,6 +123,109 @@ constexpr int kLanes = 0;
 #endif
 
 } // namespace
+
+void NoiseLevel::begin()
+{
+    std::memset(hist_y_, 0, sizeof hist_y_);
+    std::memset(hist_c_, 0, sizeof hist_c_);
+    n_ = 0;
+}
+
+void NoiseLevel::sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu,
+                        const uint8_t *mu, const uint8_t *iv, const uint8_t *mv,
+                        const uint8_t *frozen, int w)
+{
+    for (int x = 0; x < w; x += 4) {
+        if (frozen[x])
+            continue;
+        hist_y_[std::abs(iy[x] - my[x])]++;
+        if (iu)
+            hist_c_[std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
+        n_++;
+    }
+}
+
+namespace {
+
+// The median of a histogram of n values, half a level finer.
+double median_of(const uint32_t *hist, uint32_t n)
+{
+    uint32_t below = 0;
+    for (int v = 0; v < 256; v++) {
+        if (2 * (below + hist[v]) >= n)
+            return v;
+        below += hist[v];
+    }
+    return 255;
+}
+
+// How fast the estimates follow the frames, in seconds.
+constexpr double kNoiseTime = 1.0;
+// The median absolute deviation of Gaussian noise, in standard deviations.
+constexpr double kMadPerSd = 0.6745;
+
+} // namespace
+
+void NoiseLevel::end(double dt)
+{
+    if (n_ == 0)
+        return;
+    const double y = median_of(hist_y_, n_) / kMadPerSd;
+    const double c = median_of(hist_c_, n_) / kMadPerSd;
+    const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
+    luma += rate * (y - luma);
+    chroma += rate * (c - chroma);
+    known_ = true;
+}
+
+namespace {
+
+// The exposure's deadband: a ratio within 1/32 of 1 is 1 (compression and
+// people moving shift the median by less), so that a steady camera's frames
+// are read as they are.
+constexpr int kRatioOne = 64;
+constexpr int kRatioDeadband = 2;
+// Fewer usable samples than this, and the exposure is taken as the model's.
+constexpr uint32_t kMinRatioSamples = 64;
+// Model luma under this is too dark for a ratio.
+constexpr int kMinRatioLuma = 16;
+
+} // namespace
+
+double Background::exposure_ratio(const Planes &img) const
+{
+    uint32_t hist[256] = {0}, n = 0;
+    for (int y = 0; y < h_; y += 4) {
+        const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
+        const uint8_t *m = old_my_.data() + (size_t)y * w_;
+        const uint8_t *f = frozen_.data() + (size_t)y * w_;
+        for (int x = 0; x < w_; x += 4) {
+            if (f[x] || m[x] < kMinRatioLuma)
+                continue;
+            hist[std::min(255, (kRatioOne * src[x * kScale] + m[x] / 2) / m[x])]++;
+            n++;
+        }
+    }
+    if (n < kMinRatioSamples)
+        return 1.0;
+    uint32_t below = 0;
+    int median = 255;
+    for (int v = 0; v < 256; v++) {
+        if (2 * (below + hist[v]) >= n) {
+            median = v;
+            break;
+        }
+        below += hist[v];
+    }
+    return std::abs(median - kRatioOne) <= kRatioDeadband ? 1.0 : (double)median / kRatioOne;
+}
+
+void Background::set_gain(double gain)
+{
+    gain_ = gain;
+    for (int i = 0; i < 256; i++)
+        gain_lut_[i] = (uint8_t)std::min(255L, std::lround(i / gain));
+}
 
 size_t Background::memory_bytes() const
 {
@@ -143,6 +256,8 @@ void Background::rollback()
     frames_ = old_dims_.frames;
     start_us_ = old_dims_.start_us;
     last_us_ = old_dims_.last_us;
+    noise_ = old_dims_.noise;
+    set_gain(old_dims_.gain);
     kept_ = false;
 }
 
@@ -164,13 +279,14 @@ void Background::start(const Planes &img)
     frozen_.assign(n, 0);
     line_vmax_.assign(w_, kVMax);
     frames_ = 0;
+    noise_ = NoiseLevel();
 }
 
 void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int n_frozen)
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
-    old_dims_ = Dims{w_, h_, fw_, fh_, color_, frames_, start_us_, last_us_};
+    old_dims_ = Dims{w_, h_, fw_, fh_, color_, frames_, start_us_, last_us_, noise_, gain_};
     swap_models();
     kept_ = true;
     const bool restart =
@@ -194,6 +310,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     }
     if (restart)
         start_us_ = last_us_ = t_us;
+    set_gain(restart ? 1.0 : exposure_ratio(img));
     const bool warm = elapsed_us(t_us, start_us_) < (uint64_t)kWarmupUs;
     const int step =
         warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : elapsed_us(t_us, last_us_)) : 1;
@@ -202,7 +319,15 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     // the image: else V stays near kVMax, where it starts, for some 50
     // frames, and hides people with the background's contrast
     // (docs/notes/pixels.md).
-    const Rates rates{step, warm};
+    const Rates rates{step, warm,
+                      std::max(kVMin, (int)std::lround(kLumaNoise * noise_.luma)),
+                      std::max(kChromaForeground, (int)std::lround(kChromaNoise * noise_.chroma)),
+                      std::max(kShadowChroma, (int)std::lround(kShadowNoise * noise_.chroma))};
+    // The noise is sampled on a grid of every 4th working pixel, from the
+    // model before this frame (not while it starts: it is the image then).
+    const bool sample = !restart;
+    if (sample)
+        noise_.begin();
     const int cs = kScale / 2; // working pixel to chroma sample
     // Locals and restrict pointers: stores through uint8_t pointers may
     // alias anything, and would make the compiler reload every member after
@@ -219,7 +344,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
         uint8_t *__restrict iy = line_y_.data();
         for (int x = 0; x < w; x++)
-            iy[x] = src[x * kScale];
+            iy[x] = gain_lut_[src[x * kScale]];
         const size_t row = (size_t)y * w;
         uint8_t *__restrict my = my_.data() + row;
         uint8_t *__restrict vy = vy_.data() + row;
@@ -243,6 +368,8 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         const uint8_t *__restrict ov = restart ? line_vmax_.data() : old_vy_.data() + row;
         const uint8_t *__restrict ou = restart ? iu : old_mu_.data() + row;
         const uint8_t *__restrict ow = restart ? iv : old_mv_.data() + row;
+        if (sample && y % 4 == 0)
+            noise_.sample(iy, om, color ? iu : nullptr, ou, iv, ow, frozen, w);
         int x = 0;
 #if defined(__GNUC__)
         for (; x + kLanes <= w; x += kLanes) {
@@ -279,17 +406,20 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
             mask[x] = fg ? 255 : 0;
         }
     }
+    if (sample)
+        noise_.end(restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
 }
 
 namespace {
 
-// Luma at working pixel (x, y), clamped to the image.
-inline int luma_at(const Planes &img, int w, int h, int x, int y)
+// Luma at working pixel (x, y), clamped to the image, through the exposure
+// table lut.
+inline int luma_at(const Planes &img, const uint8_t *lut, int w, int h, int x, int y)
 {
     x = std::min(std::max(x, 0), w - 1);
     y = std::min(std::max(y, 0), h - 1);
-    return img.y[(size_t)(y * Background::kScale) * img.y_stride + x * Background::kScale];
+    return lut[img.y[(size_t)(y * Background::kScale) * img.y_stride + x * Background::kScale]];
 }
 
 } // namespace
@@ -310,8 +440,9 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
         for (int x = x0; x < x1; x++) {
             if (!on_outline(blob, (size_t)w, x0, y0, x1, y1, x, y))
                 continue;
-            *frame += std::abs(luma_at(img, w, h, x + 1, y) - luma_at(img, w, h, x - 1, y)) +
-                      std::abs(luma_at(img, w, h, x, y + 1) - luma_at(img, w, h, x, y - 1));
+            const uint8_t *g = gain_lut_;
+            *frame += std::abs(luma_at(img, g, w, h, x + 1, y) - luma_at(img, g, w, h, x - 1, y)) +
+                      std::abs(luma_at(img, g, w, h, x, y + 1) - luma_at(img, g, w, h, x, y - 1));
             *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
         }
 }
@@ -324,7 +455,7 @@ void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)
             const size_t i = (size_t)y * w_ + x;
             if (!blob[i])
                 continue;
-            my_[i] = (uint8_t)luma_at(img, w_, h_, x, y);
+            my_[i] = (uint8_t)luma_at(img, gain_lut_, w_, h_, x, y);
             if (color_) {
                 mu_[i] = img.u[(size_t)(y * cs) * img.u_stride + (size_t)(x * cs) * img.c_step];
                 mv_[i] = img.v[(size_t)(y * cs) * img.v_stride + (size_t)(x * cs) * img.c_step];

@@ -12,8 +12,29 @@
 
 namespace ctrack {
 
+// The scene's sensor noise, learnt from the frames: each frame, the median
+// absolute difference between the image and the background model, over a
+// grid of pixels no track stands on (most of them are background, whatever
+// moves), read as a standard deviation and smoothed over about a second.
+struct NoiseLevel {
+    double luma = 0, chroma = 0; // standard deviations, grey levels
+    void begin();
+    // One row's samples (every 4th pixel): image and model luma, and chroma
+    // (u null for grey frames); frozen marks where tracks stand.
+    void sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu, const uint8_t *mu,
+                const uint8_t *iv, const uint8_t *mv, const uint8_t *frozen, int w);
+    // The frame's medians into the estimates, dt seconds after the last.
+    void end(double dt);
+
+private:
+    uint32_t hist_y_[256], hist_c_[256];
+    uint32_t n_ = 0;
+    bool known_ = false; // the first frame's medians are taken as they are
+};
+
 class Background {
 public:
+    Background() { set_gain(1.0); }
     // One working pixel for 2 x 2 frame pixels (the chroma grid of 4:2:0).
     static constexpr int kScale = 2;
 
@@ -49,11 +70,24 @@ public:
 
 private:
     void start(const Planes &img);
+    // The frame's exposure against the model's: the median ratio of image to
+    // model luma over a grid of pixels no track stands on (1 within a
+    // deadband). A global step of light (auto-exposure, a cloud, a lamp)
+    // changes it, people moving do not.
+    double exposure_ratio(const Planes &img) const;
+    // Reads the frame's luma divided by gain from now on (gain_lut_).
+    void set_gain(double gain);
     void swap_models();
 
     int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0;
     bool color_ = false;
     int frames_ = 0;
+    NoiseLevel noise_;
+    // The exposure, and the table through which the frame's luma is read:
+    // the model stays in its own exposure while the frames' changes, and a
+    // global step of light is no foreground.
+    double gain_ = 1.0;
+    uint8_t gain_lut_[256];
     int64_t start_us_ = 0, last_us_ = 0;
     // Means and variances (Sigma-Delta: M moves one level a frame toward
     // the image, V toward N times |I - M|).
@@ -65,6 +99,8 @@ private:
         bool color;
         int frames;
         int64_t start_us, last_us;
+        NoiseLevel noise;
+        double gain;
     } old_dims_{};
     std::vector<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     bool kept_ = false;

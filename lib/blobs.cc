@@ -12,6 +12,9 @@ namespace ctrack {
 namespace {
 
 constexpr int kMinArea = 100;         // working pixels (400 frame pixels)
+// The bounds on a frame's work (BlobFinder::find()).
+constexpr int kMaxBlobs = 128;
+constexpr double kMaxForeground = 0.5;
 constexpr int kMinHeight = 10;        // working pixels
 constexpr double kMergeOverlap = 0.5; // of the narrower blob's width
 constexpr double kMergeGap = 0.25;    // of the taller blob's height
@@ -159,7 +162,16 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
 {
     Impl &m = *impl_;
     out.clear();
+    dropped_ = 0;
+    flooded_ = false;
     clean(mask, w, h);
+    // A mask more than kMaxForeground foreground is no picture of people (a
+    // light switched, the camera moved, noise the model has not learnt):
+    // nothing in it is a candidate.
+    if (cv::countNonZero(m.clean) > kMaxForeground * w * h) {
+        flooded_ = true;
+        return;
+    }
     m.clean.copyTo(m.tmp); // findContours may change its input
     cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
 
@@ -168,6 +180,16 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     for (const auto &c : m.contours) {
         cv::Rect r = cv::boundingRect(c);
         b.push_back(Rect{r.x, r.y, r.x + r.width, r.y + r.height});
+    }
+    // At most kMaxBlobs go on, the largest (then the first found): merging
+    // fragments looks at every pair, and a flickering mask could make
+    // thousands.
+    if (b.size() > (size_t)kMaxBlobs) {
+        auto area = [](const Rect &r) { return (long)(r.x1 - r.x0) * (r.y1 - r.y0); };
+        std::stable_sort(b.begin(), b.end(),
+                         [&](const Rect &p, const Rect &q) { return area(p) > area(q); });
+        dropped_ = (int)b.size() - kMaxBlobs;
+        b.resize(kMaxBlobs);
     }
 
     // Fragments of one person (head, torso, legs split by clothes that match

@@ -28,6 +28,10 @@ public:
     // where a merge or a split is in doubt.
     void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
               Classifier &cls, std::vector<Rect> &out);
+    // The last find()'s cuts: blobs past the cap (the smallest), and whether
+    // the mask was so full of foreground that it gave none.
+    int dropped() const { return dropped_; }
+    bool flooded() const { return flooded_; }
     // Only the cleaning: the closing of the w x h mask.
     void clean(const uint8_t *mask, int w, int h);
     // The cleaned mask of the last find() or clean(), and its size.
@@ -47,6 +51,8 @@ private:
     int between_heads(const Rect &r, Classifier &cls);
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    int dropped_ = 0;
+    bool flooded_ = false;
 };
 
 // Person shape in working pixels: height over width of an upright person is

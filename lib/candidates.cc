@@ -74,6 +74,8 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Tr
     blobs_.find(background_.mask(), background_.width(), background_.height(), predicted_.data(),
                 (int)predicted_.size(), classifier_, blob_rects_);
     have_mask_ = true;
+    blobs_dropped += (uint64_t)blobs_.dropped();
+    masks_flooded += blobs_.flooded();
     stage_ns[CT_STAGE_BLOBS] += sw.lap();
     candidates_.clear();
     const int s = Background::kScale;

@@ -48,6 +48,8 @@ public:
     void commit() { background_.commit(); }
     void rollback() { background_.rollback(); }
     size_t memory_bytes() const;
+    // Blobs dropped past the cap, and flooded masks, since create.
+    uint64_t blobs_dropped = 0, masks_flooded = 0;
 
 private:
     // The background model over this frame (tracks that moved are frozen).

@@ -297,6 +297,8 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     s.mean_shift_runs = e.mean_shift_runs();
     s.ddis_runs = e.ddis_runs();
     s.template_builds = e.template_builds();
+    s.blobs_dropped = e.blobs_dropped();
+    s.masks_flooded = e.masks_flooded();
     ctrack::write_sized(stats, size, s);
     return CT_OK;
 }

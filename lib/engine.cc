@@ -220,7 +220,8 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
     const SceneMotion scene = scene_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
-    const uint64_t runs[3] = {ms_runs_, bank_.ddis_runs, bank_.builds};
+    const uint64_t runs[5] = {ms_runs_, bank_.ddis_runs, bank_.builds, pixels_.blobs_dropped,
+                              pixels_.masks_flooded};
     uint64_t stage_ns[CT_STATS_MAX_STAGES];
     std::copy(stage_ns_, stage_ns_ + CT_STATS_MAX_STAGES, stage_ns);
     pixels_.commit(); // the last step's update stands
@@ -240,6 +241,8 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
         ms_runs_ = runs[0];
         bank_.ddis_runs = runs[1];
         bank_.builds = runs[2];
+        pixels_.blobs_dropped = runs[3];
+        pixels_.masks_flooded = runs[4];
         std::copy(stage_ns, stage_ns + CT_STATS_MAX_STAGES, stage_ns_);
         throw;
     }

@@ -36,6 +36,8 @@ public:
     uint64_t mean_shift_runs() const { return ms_runs_; }
     uint64_t ddis_runs() const { return bank_.ddis_runs; }
     uint64_t template_builds() const { return bank_.builds; }
+    uint64_t blobs_dropped() const { return pixels_.blobs_dropped; }
+    uint64_t masks_flooded() const { return pixels_.masks_flooded; }
     size_t memory_bytes() const;
     // Nanoseconds spent in each ct_stage, summed over the steps.
     const uint64_t *stage_ns() const { return stage_ns_; }

@@ -57,6 +57,45 @@ def video(seq):
     return out
 
 
+# Camera conditions made from a video by an ffmpeg filter, with what the
+# filter does to a box (left, top, width, height) of a width x height image.
+CONDITIONS = {
+    "half size": ("scale=iw/2:ih/2", lambda b, w, h: (b[0] / 2, b[1] / 2, b[2] / 2, b[3] / 2)),
+    "sensor noise": ("noise=alls=14:allf=t", None),
+    "darker, lower contrast": ("eq=brightness=-0.12:contrast=0.55", None),
+    "mirrored": ("hflip", lambda b, w, h: (w - b[0] - b[2], b[1], b[2], b[3])),
+    # An auto-exposure or a cloud: brighter and more contrasted, in steps,
+    # for frames 30 to 59 and 300 to 399 (from 0).
+    "exposure steps": ("eq=brightness=0.08:contrast=1.2:"
+                       "enable='between(n,30,59)+between(n,300,399)'", None),
+}
+
+
+def conditioned(seq, name, tmp):
+    """The sequence in a camera condition: its video through the condition's
+    ffmpeg filter (cached beside the decoded videos), and its ground truth
+    and detections with their boxes moved to match (in tmp). Returns
+    (y4m, gt, det, info)."""
+    vf, move = CONDITIONS[name]
+    info = seqinfo(seq)
+    tag = "%s-%s" % (seq.lower(), name.split(",")[0].replace(" ", "-"))
+    out = os.path.join(cache_dir(), tag + ".y4m")
+    if not os.path.exists(out):
+        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video(seq), "-vf", vf,
+                        "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out + ".part"], check=True)
+        os.replace(out + ".part", out)
+    paths = []
+    for kind in ("gt", "det"):
+        a = np.loadtxt(os.path.join(DATA, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
+        if move is not None:
+            for row in a:
+                row[2:6] = move(row[2:6], info["width"], info["height"])
+        paths.append(os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
+        np.savetxt(paths[-1], a, delimiter=",", fmt="%.6g")
+    w, h, _, _ = open_y4m(out)
+    return out, paths[0], paths[1], dict(info, width=w, height=h)
+
+
 def load_dets(seq, path=None):
     d = np.loadtxt(path or os.path.join(DATA, seq, "det", "det.txt"), delimiter=",", ndmin=2)
     return {int(k): d[d[:, 0] == k][:, 2:7] for k in np.unique(d[:, 0])}

@@ -407,6 +407,11 @@ typedef struct ct_stats {
     /* Added in 0.3.0: DDIS evaluations and template (FLANN index) builds. */
     uint64_t ddis_runs;
     uint64_t template_builds;
+    /* Added in 0.9.0: from the pixels, the blobs past a frame's cap (128:
+     * the smallest were dropped), and the frames whose foreground covered
+     * more than half the image and gave no candidate. */
+    uint64_t blobs_dropped;
+    uint64_t masks_flooded;
 } ct_stats;
 
 /* Fills *stats (stats->size must be set). Resetting the tracker does not

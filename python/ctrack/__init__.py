@@ -297,7 +297,8 @@ class Tracker:
         return {"steps": s.steps, "feed_seconds": s.feed_ns * 1e-9, "stages": stages,
                 "live_tracks": s.live_tracks, "memory_bytes": s.memory_bytes,
                 "mean_shift_runs": s.mean_shift_runs, "ddis_runs": s.ddis_runs,
-                "template_builds": s.template_builds}
+                "template_builds": s.template_builds, "blobs_dropped": s.blobs_dropped,
+                "masks_flooded": s.masks_flooded}
 
     # -- conversions -------------------------------------------------------
     def _fill_frame(self, f, frame, format):

@@ -145,6 +145,8 @@ class Stats(C.Structure):
         ("mean_shift_runs", C.c_uint64),
         ("ddis_runs", C.c_uint64),
         ("template_builds", C.c_uint64),
+        ("blobs_dropped", C.c_uint64),
+        ("masks_flooded", C.c_uint64),
     ]
 
 

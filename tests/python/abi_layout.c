@@ -48,6 +48,8 @@ int main(void)
     FIELD(ct_stats, stage_ns); FIELD(ct_stats, live_tracks); FIELD(ct_stats, memory_bytes);
     FIELD(ct_stats, mean_shift_runs); FIELD(ct_stats, ddis_runs);
     FIELD(ct_stats, template_builds);
+    FIELD(ct_stats, blobs_dropped);
+    FIELD(ct_stats, masks_flooded);
     first = 0;
     printf("}, \"Candidate\": {\"sizeof\": %zu, ", sizeof(ct_candidate));
     FIELD(ct_candidate, left); FIELD(ct_candidate, top); FIELD(ct_candidate, width);
