@@ -1,6 +1,8 @@
 // The only file of the library that includes OpenCV.
 #include "blobs.h"
 
+#include "background.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -11,11 +13,24 @@ namespace ctrack {
 
 namespace {
 
-constexpr int kMinArea = 100;         // working pixels (400 frame pixels)
+// A working pixel is this many frame pixels across.
+constexpr int kScale = Background::kScale;
+
+// A blob is kept when it covers at least this part of the box of a person
+// standing where its feet are, and is at least this part of their height
+// (the person's size from PersonSize)...
+constexpr double kMinAreaFraction = 0.12, kMinHeightFraction = 0.4;
+// ...and while the model knows nothing, when it covers this many working
+// pixels and rows: a person of about 40 frame pixels, which the prior's
+// smallest (30) approaches.
+constexpr int kPriorMinArea = 100, kPriorMinRows = 10;
+// Fragments merge only while their union is at most this many person
+// heights tall (where the size is known): two people one behind the other
+// are no person.
+constexpr double kMaxUnionHeight = 1.3;
 // The bounds on a frame's work (BlobFinder::find()).
 constexpr int kMaxBlobs = 128;
 constexpr double kMaxForeground = 0.5;
-constexpr int kMinHeight = 10;        // working pixels
 constexpr double kMergeOverlap = 0.5; // of the narrower blob's width
 constexpr double kMergeGap = 0.25;    // of the taller blob's height
 constexpr double kFarMergeGap = 1.0;  // with the contour template's consent
@@ -158,10 +173,11 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-                      Classifier &cls, std::vector<Rect> &out)
+                      const PersonSize &size, Classifier &cls, std::vector<Rect> &out)
 {
     Impl &m = *impl_;
     out.clear();
+    whole_.clear();
     dropped_ = 0;
     flooded_ = false;
     clean(mask, w, h);
@@ -215,6 +231,9 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                 Rect u = unite(p, q);
                 if (u.y1 - u.y0 < kPersonAspect * 0.75 * (u.x1 - u.x0))
                     continue;
+                if (size.known() &&
+                    (u.y1 - u.y0) * kScale > kMaxUnionHeight * size.height_at(u.y1 * kScale))
+                    continue;
                 // Close fragments merge; farther ones only when the union
                 // looks more like a person than either part does.
                 float vu = NAN;
@@ -236,10 +255,22 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         int area = 0;
         for (int y = r.y0; y < r.y1; y++)
             area += cv::countNonZero(m.clean.row(y).colRange(r.x0, r.x1));
-        if (area < kMinArea || bh < kMinHeight)
+        // A speck or a fragment: under a part of the person who would stand
+        // where the blob's feet are (working pixels; while the size model
+        // knows nothing, under the prior's smallest person).
+        if (size.known()) {
+            const double person_h = size.height_at(r.y1 * kScale) / kScale;
+            const double person_w = size.width_at(r.y1 * kScale) / kScale;
+            if (area < kMinAreaFraction * person_h * person_w ||
+                bh < kMinHeightFraction * person_h)
+                continue;
+        } else if (area < kPriorMinArea || bh < kPriorMinRows) {
             continue;
-        // A group: wider than one person of this height.
-        const double person_w = bh / kPersonAspect;
+        }
+        // A group: wider than one person of this height (of the size
+        // model's width where it knows it).
+        const double person_w =
+            size.known() ? size.width_at(r.y1 * kScale) / kScale : bh / kPersonAspect;
         const int parts = (int)std::lround(bw / person_w);
         // The predicted centres of the tracks inside, those closer than
         // kMinCentreGap heights to the one before counted once.
@@ -262,6 +293,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
             head_cut = between_heads(r, cls);
             if (head_cut < 0) {
                 out.push_back(r);
+                whole_.push_back(1);
                 continue;
             }
         }
@@ -308,8 +340,10 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         for (size_t k = 0; k + 1 < cuts.size(); k++) {
             // Each part's own vertical extent.
             const Rect part = rows_of(r, cuts[k], cuts[k + 1]);
-            if (part.y1 > part.y0 && part.x1 > part.x0)
+            if (part.y1 > part.y0 && part.x1 > part.x0) {
                 out.push_back(part);
+                whole_.push_back(cuts.size() == 2);
+            }
         }
     }
 }

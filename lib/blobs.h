@@ -10,6 +10,7 @@
 
 #include "classifier.h"
 #include "mask.h"
+#include "person_size.h"
 
 namespace ctrack {
 
@@ -24,13 +25,18 @@ public:
     // its blobs: those at least min_area pixels, fragments of one person
     // (stacked one above the other) merged, and blobs wider than a person
     // split, at the predicted boxes' centres when tracks are there, else
-    // into equal parts at the valleys of the column profile. `cls` votes
-    // where a merge or a split is in doubt.
+    // into equal parts at the valleys of the column profile. What counts as
+    // a speck, a person's height and a person's width come from `size`
+    // (frame pixels, at the background model's scale from the mask); `cls`
+    // votes where a merge or a split is in doubt.
     void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-              Classifier &cls, std::vector<Rect> &out);
+              const PersonSize &size, Classifier &cls, std::vector<Rect> &out);
     // The last find()'s cuts: blobs past the cap (the smallest), and whether
     // the mask was so full of foreground that it gave none.
     int dropped() const { return dropped_; }
+    // Whether the last find()'s blob i is a whole blob, not a part of one
+    // that was split (a group, or a blob two tracks shared).
+    bool whole(size_t i) const { return whole_[i] != 0; }
     bool flooded() const { return flooded_; }
     // Only the cleaning: the closing of the w x h mask.
     void clean(const uint8_t *mask, int w, int h);
@@ -51,6 +57,7 @@ private:
     int between_heads(const Rect &r, Classifier &cls);
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    std::vector<char> whole_;
     int dropped_ = 0;
     bool flooded_ = false;
 };

@@ -63,7 +63,7 @@ void PixelCandidates::update_background(int64_t t_us, const Planes &img,
 }
 
 void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
-                           uint64_t *stage_ns)
+                           const PersonSize &size, uint64_t *stage_ns)
 {
     dets_.clear();
     if (img.empty())
@@ -72,14 +72,16 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Tr
     update_background(t_us, img, tracks);
     stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     blobs_.find(background_.mask(), background_.width(), background_.height(), predicted_.data(),
-                (int)predicted_.size(), classifier_, blob_rects_);
+                (int)predicted_.size(), size, classifier_, blob_rects_);
     have_mask_ = true;
     blobs_dropped += (uint64_t)blobs_.dropped();
     masks_flooded += blobs_.flooded();
     stage_ns[CT_STAGE_BLOBS] += sw.lap();
     candidates_.clear();
+    whole_.clear();
     const int s = Background::kScale;
-    for (const Rect &r : blob_rects_) {
+    for (size_t i = 0; i < blob_rects_.size(); i++) {
+        const Rect &r = blob_rects_[i];
         // A ghost is learnt at once and is no candidate.
         long frame_edges, model_edges;
         background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
@@ -92,6 +94,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Tr
             (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
         candidates_.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
+        whole_.push_back(blobs_.whole(i));
     }
     stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
 }

@@ -10,6 +10,7 @@
 #include "background.h"
 #include "blobs.h"
 #include "classifier.h"
+#include "person_size.h"
 #include "planes.h"
 #include "track.h"
 
@@ -25,7 +26,7 @@ public:
     // background under them, and tracks inside a blob split it. The time
     // of each stage goes to stage_ns.
     void find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
-              uint64_t *stage_ns);
+              const PersonSize &size, uint64_t *stage_ns);
     // The vote on the foreground inside each of the n detections: one
     // candidate each, in order, and dets() the detections with the score of
     // those the vote rejects multiplied by the vote's.
@@ -33,6 +34,9 @@ public:
                 const ct_detection *dets, size_t n, uint64_t *stage_ns);
 
     const std::vector<ct_detection> &dets() const { return dets_; }
+    // Whether this step's candidate i (of find()) is a whole blob: a part
+    // of a split one tells nothing of a person's width.
+    bool whole(size_t i) const { return whole_[i] != 0; }
     const std::vector<ct_candidate> &candidates() const { return candidates_; }
     std::vector<ct_candidate> &candidates() { return candidates_; }
     // The centroid of this step's foreground inside b, or its centre.
@@ -61,6 +65,7 @@ private:
     bool have_mask_ = false; // this step
     std::vector<Rect> frozen_, predicted_, blob_rects_;
     std::vector<ct_detection> dets_;
+    std::vector<char> whole_;
     std::vector<ct_candidate> candidates_;
 };
 

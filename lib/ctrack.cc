@@ -267,6 +267,34 @@ const char *ct_stage_name(int stage)
     }
 }
 
+int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    clear_error(tracker);
+    if (!out)
+        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
+                            "out: NULL pointer");
+    const size_t size = out->size, v1 = sizeof(ct_person_size);
+    if (size < v1 || size > ctrack::kMaxStructSize)
+        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
+                            "out.size: %zu is not sizeof(ct_person_size) (%zu, or more from a "
+                            "newer header)",
+                            size, v1);
+    const ctrack::PersonSize &p = tracker->engine.person_size();
+    ct_person_size s = {};
+    s.size = size;
+    s.known = p.known();
+    if (p.known()) {
+        s.height_slope = (float)p.slope();
+        s.height_intercept = (float)p.intercept();
+        s.width_ratio = (float)p.aspect();
+    }
+    s.samples = p.samples();
+    ctrack::write_sized(out, size, s);
+    return CT_OK;
+}
+
 int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
 {
     if (!tracker)

@@ -27,6 +27,7 @@ void Engine::reset()
 {
     pixels_.reset();
     scene_.reset();
+    size_.reset(0);
     tracks_.clear();
     reported_.clear();
     has_time_ = false;
@@ -194,6 +195,30 @@ void Engine::reidentify(const ct_detection *dets)
                      pool_dets_.end());
 }
 
+void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image)
+{
+    if (!image.known())
+        return;
+    if (size_.image_height() != image.height)
+        size_.reset(image.height);
+    // A box touching the image's edge may hold part of a person.
+    constexpr double kEdge = 2;
+    const float score =
+        cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
+    for (const Track &t : tracks_) {
+        if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
+            continue;
+        const ct_detection &d = dets[t.det_index];
+        if (cfg_.source == CT_SOURCE_PIXELS && !pixels_.whole((size_t)t.det_index))
+            continue;
+        if (d.score < score || d.left < kEdge || d.top < kEdge ||
+            d.left + d.width > image.width - kEdge || d.top + d.height > image.height - kEdge)
+            continue;
+        size_.observe(d.top, d.height, d.width);
+    }
+    size_.learn();
+}
+
 void Engine::recover(const ct_detection *dets)
 {
     for (int i : pool_tracks_)
@@ -218,6 +243,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
     saved_candidates_ = pixels_.candidates();
     const uint64_t next_id = next_id_;
     const SceneMotion scene = scene_;
+    saved_size_ = size_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
     const uint64_t runs[5] = {ms_runs_, bank_.ddis_runs, bank_.builds, pixels_.blobs_dropped,
@@ -236,6 +262,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
         pixels_.rollback();
         next_id_ = next_id;
         scene_ = scene;
+        size_ = saved_size_;
         last_us_ = last_us;
         has_time_ = has_time;
         ms_runs_ = runs[0];
@@ -265,7 +292,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     stage_ns_[CT_STAGE_PREDICT] += sw.lap();
     pixels_.clear();
     if (cfg_.source == CT_SOURCE_PIXELS) {
-        pixels_.find(t_us, img, tracks_, stage_ns_);
+        pixels_.find(t_us, img, tracks_, size_, stage_ns_);
         dets = pixels_.dets().data();
         n = pixels_.dets().size();
         sw.lap();
@@ -337,6 +364,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     }
 
     scene_.learn(dt);
+    learn_sizes(dets, t_us, image);
     age_unmatched(t_us, image);
     // New tracks from the high-score detections nobody claimed that reach
     // start_score (a detector's boxes only: the pixels' candidates start

@@ -13,6 +13,7 @@
 #include "gate.h"
 #include "meanshift.h"
 #include "planes.h"
+#include "person_size.h"
 #include "scene.h"
 #include "templates.h"
 #include "track.h"
@@ -38,6 +39,7 @@ public:
     uint64_t template_builds() const { return bank_.builds; }
     uint64_t blobs_dropped() const { return pixels_.blobs_dropped; }
     uint64_t masks_flooded() const { return pixels_.masks_flooded; }
+    const PersonSize &person_size() const { return size_; }
     size_t memory_bytes() const;
     // Nanoseconds spent in each ct_stage, summed over the steps.
     const uint64_t *stage_ns() const { return stage_ns_; }
@@ -74,6 +76,9 @@ private:
     // Tracks no detection updated: lost, or removed when tentative, past
     // their lifetime or outside the image.
     void age_unmatched(int64_t t_us, ImageSize image);
+    // The people's size learnt from this step's confident single-person
+    // boxes: the detections (or candidates) that updated confirmed tracks.
+    void learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image);
     // Matches the tracks left in pool_tracks_ to the detections left in
     // pool_dets_ by their last detection's box instead of the prediction.
     void recover(const ct_detection *dets);
@@ -98,11 +103,13 @@ private:
     std::vector<Track> saved_tracks_;
     std::vector<ct_track> saved_reported_;
     std::vector<ct_candidate> saved_candidates_;
+    PersonSize saved_size_;
 
     MeanShift ms_;
     MeanShiftParams ms_params_;
     int min_rho_ = 0;         // mean_shift_min_similarity in Q16
     SceneMotion scene_;
+    PersonSize size_;
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;

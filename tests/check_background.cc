@@ -4,6 +4,7 @@
 
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -285,8 +286,9 @@ START_TEST(fragments_merge_and_groups_split)
     rect(80, 20, 120, 60); // two people of 40 rows side by side
     BlobFinder bf;
     Classifier cls;
+    PersonSize size;
     std::vector<Rect> out;
-    bf.find(m.data(), W, H, nullptr, 0, cls, out);
+    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 3);
     int merged = 0, parts = 0;
     for (const Rect &r : out) {
@@ -301,6 +303,53 @@ START_TEST(fragments_merge_and_groups_split)
     }
     ck_assert_int_eq(merged, 1);
     ck_assert_int_eq(parts, 2);
+}
+END_TEST
+
+// What the people's size says: a blob as wide as two of the people learnt
+// is split in two, and kept whole where the people learnt are as wide as
+// it; a speck a third of a person's height is dropped once the size is
+// known, though the prior (a person may be 30 pixels tall) kept it.
+START_TEST(groups_split_by_the_learnt_size)
+{
+    std::vector<uint8_t> m(W * H, 0);
+    auto rect = [&](int x0, int y0, int x1, int y1) {
+        for (int r = y0; r < y1; r++)
+            for (int c = x0; c < x1; c++)
+                m[r * W + c] = 255;
+    };
+    rect(60, 20, 92, 60);  // 32 x 40, a flat top: no heads to cut between
+    rect(120, 48, 132, 60); // a speck of 12 x 12, its feet on the same row
+    const int s = Background::kScale;
+    auto learnt = [&](double aspect) {
+        PersonSize p;
+        p.reset(H * s);
+        for (int k = 0; k < 40; k++) // people 40 rows tall, their feet at row 60
+            p.observe(20 * s + (k % 3 - 1), 40 * s, aspect * 40 * s);
+        p.learn();
+        ck_assert(p.known());
+        ck_assert_double_eq_tol(p.height_at(60 * s), 40 * s, 0.06 * 40 * s);
+        return p;
+    };
+    BlobFinder bf;
+    Classifier cls;
+    std::vector<Rect> out;
+    const PersonSize unknown, narrow = learnt(0.4), wide = learnt(0.8);
+    bf.find(m.data(), W, H, nullptr, 0, unknown, cls, out);
+    ck_assert(std::any_of(out.begin(), out.end(), [](const Rect &r) { return r.x0 >= 120; }));
+    bf.find(m.data(), W, H, nullptr, 0, narrow, cls, out);
+    ck_assert_int_eq((int)out.size(), 2);
+    for (size_t i = 0; i < out.size(); i++) {
+        ck_assert_int_lt(out[i].x1, 100); // no speck
+        ck_assert(!bf.whole(i));
+        ck_assert_int_ge(out[i].x1 - out[i].x0, 12);
+        ck_assert_int_le(out[i].x1 - out[i].x0, 20);
+    }
+    bf.find(m.data(), W, H, nullptr, 0, wide, cls, out);
+    ck_assert_int_eq((int)out.size(), 1);
+    ck_assert_int_eq(out[0].x0, 60);
+    ck_assert_int_eq(out[0].x1, 92);
+    ck_assert(bf.whole(0));
 }
 END_TEST
 
@@ -319,10 +368,11 @@ START_TEST(close_pair_splits_between_tracks)
             m[r * W + c] = 0;
     BlobFinder bf;
     Classifier cls;
+    PersonSize size;
     std::vector<Rect> out;
     auto track_at = [](int centre) { return Rect{centre - 8, 20, centre + 8, 60}; };
     const Rect two[2] = {track_at(88), track_at(100)}; // 12 apart, 0.3 heights
-    bf.find(m.data(), W, H, two, 2, cls, out);
+    bf.find(m.data(), W, H, two, 2, size, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     const Rect &right = out[0].x0 < out[1].x0 ? out[1] : out[0];
@@ -332,11 +382,11 @@ START_TEST(close_pair_splits_between_tracks)
     ck_assert_int_eq(right.x0, 94);
     // No tracks, one, or two closer than a fifth of the height: one blob.
     for (int n : {0, 1}) {
-        bf.find(m.data(), W, H, two, n, cls, out);
+        bf.find(m.data(), W, H, two, n, size, cls, out);
         ck_assert_int_eq((int)out.size(), 1);
     }
     const Rect close[2] = {track_at(92), track_at(97)}; // 5 apart
-    bf.find(m.data(), W, H, close, 2, cls, out);
+    bf.find(m.data(), W, H, close, 2, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -402,12 +452,13 @@ START_TEST(pair_splits_between_heads)
     };
     BlobFinder bf;
     Classifier cls;
+    PersonSize size;
     std::vector<Rect> out;
     person(40);
-    bf.find(m.data(), W, H, nullptr, 0, cls, out);
+    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
     person(58); // heads at columns 55 and 73: 0.225 heights apart
-    bf.find(m.data(), W, H, nullptr, 0, cls, out);
+    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     ck_assert_msg(left.x1 > 58 && left.x1 < 70, "cut at %d, not between the heads (55, 73)",
@@ -417,7 +468,7 @@ START_TEST(pair_splits_between_heads)
         for (int c = 40; c < 88; c++)
             if (r >= 30 || (c >= 46 && c < 54) || (c >= 74 && c < 82))
                 m[r * W + c] = 255;
-    bf.find(m.data(), W, H, nullptr, 0, cls, out);
+    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -681,6 +732,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, start_lasts_the_same_time_at_any_frame_rate);
     tcase_add_test(tc, start_with_timestamps_far_apart);
     tcase_add_test(tc, fragments_merge_and_groups_split);
+    tcase_add_test(tc, groups_split_by_the_learnt_size);
     tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, pair_splits_between_heads);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);

@@ -455,13 +455,16 @@ START_TEST(a_new_frame_size_starts_the_model_again)
 }
 END_TEST
 
-/* A pedestrian's shape 70 pixels tall, its top centre at (cx, top): head,
- * neck, torso with arms, and two legs, drawn over what is there. */
-static void draw_pedestrian(image *im, double cx, int top)
+/* A pedestrian's shape `tall` pixels tall, its top centre at (cx, top):
+ * head, neck, torso with arms, and two legs, drawn over what is there. */
+static void draw_pedestrian_of(image *im, double cx, int top, int tall)
 {
-    for (int y = top; y < top + 70; y++)
-        for (int x = (int)cx - 20; x <= (int)cx + 20; x++) {
-            const double u = (x - cx) / 70, v = (y - top) / 70.0;
+    const int half = (int)(0.14 * tall) + 1;
+    for (int y = top; y < top + tall && y < H; y++)
+        for (int x = (int)cx - half; x <= (int)cx + half; x++) {
+            if (x < 0 || x >= W)
+                continue;
+            const double u = (x - cx) / tall, v = (double)(y - top) / tall;
             bool in;
             if (v < 0.13)
                 in = u * u / 0.0036 + (v - 0.065) * (v - 0.065) / 0.0042 <= 1;
@@ -479,6 +482,11 @@ static void draw_pedestrian(image *im, double cx, int top)
             im->uv[(y / 2) * W + 2 * (x / 2)] = 90;
             im->uv[(y / 2) * W + 2 * (x / 2) + 1] = 200;
         }
+}
+
+static void draw_pedestrian(image *im, double cx, int top)
+{
+    draw_pedestrian_of(im, cx, top, 70);
 }
 
 /* A car: a wide dark rectangle with its top-left corner at (x0, y0). */
@@ -705,6 +713,51 @@ START_TEST(packed_colour_frames_track_as_their_planes)
 }
 END_TEST
 
+/* The people's size: two people walk across, one far (50 pixels tall,
+ * feet at row 110) and one near (90 pixels, feet at row 225), from the
+ * pixels alone. The tracker knows nothing of their size at first, and
+ * after a few seconds its line gives both heights within a tenth. */
+START_TEST(person_size_learnt_from_walkers_at_two_depths)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    /* As in pixels_alone: the far person, 25 rows at the background
+     * model's scale, is not always taken for a pedestrian. */
+    cfg.candidate_min_score = cfg.low_score;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    ct_person_size ps = {.size = sizeof ps};
+    ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+    ck_assert_int_eq(ps.known, 0);
+    ck_assert_uint_eq(ps.samples, 0);
+    for (int k = 0; k < 60; k++) {
+        draw(&im, -1, 0);
+        draw_pedestrian_of(&im, 20 + 4.5 * k, 60, 50);
+        draw_pedestrian_of(&im, 300 - 4.5 * k, 135, 90);
+        step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+    }
+    ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+    ck_assert_msg(ps.known, "nothing learnt from %llu boxes", (unsigned long long)ps.samples);
+    const double far = ps.height_slope * 110 + ps.height_intercept;
+    const double near = ps.height_slope * 225 + ps.height_intercept;
+    ck_assert_msg(fabs(far - 50) <= 5 && fabs(near - 90) <= 9,
+                  "heights %.1f at row 110 (50) and %.1f at row 225 (90): %.3f y + %.1f", far,
+                  near, (double)ps.height_slope, (double)ps.height_intercept);
+    ck_assert(ps.width_ratio > 0.15 && ps.width_ratio < 0.6);
+    /* Reset forgets it; bad arguments are refused. */
+    ck_assert_int_eq(ct_tracker_reset(t), CT_OK);
+    ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+    ck_assert_int_eq(ps.known, 0);
+    ck_assert_int_eq(ct_tracker_get_person_size(NULL, &ps), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_get_person_size(t, NULL), CT_ERROR_INVALID_ARGUMENT);
+    ps.size = 4;
+    ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "ct_person_size"));
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -722,6 +775,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, a_new_frame_size_starts_the_model_again);
     tcase_add_test(tc, verify_detections_rejects_a_car);
     tcase_add_test(tc, packed_colour_frames_track_as_their_planes);
+    tcase_add_test(tc, person_size_learnt_from_walkers_at_two_depths);
     suite_add_tcase(s, tc);
     return s;
 }

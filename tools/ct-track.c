@@ -224,6 +224,14 @@ static int track_frame(run *r, long long k, const ct_frame *frame, const ct_fram
     if (r->cand_out)
         mot_write_candidates(r->cand_out, k, r->cands, r->n_cands);
     mot_write_tracks(r->out, k, r->tracks, r->n_tracks);
+    if (r->overlay && o->overlay_size) {
+        ct_person_size size = {.size = sizeof size};
+        if (ct_tracker_get_person_size(r->tracker, &size) != CT_OK) {
+            fprintf(stderr, "ct-track: frame %lld: %s\n", k, ct_tracker_last_error(r->tracker));
+            return -1;
+        }
+        overlay_set_person_size(r->overlay, &size);
+    }
     char msg[512];
     if (r->overlay && overlay_write(r->overlay, picture, r->tracks, r->n_tracks, r->cands,
                                     o->overlay_candidates ? r->n_cands : 0, msg,

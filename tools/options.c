@@ -86,6 +86,8 @@ static void usage(FILE *out)
             "      --overlay-candidates  also draw the blobs found in the pixels (or the\n"
             "                         detections, with verify_detections=1) with the\n"
             "                         contour template's score: white a pedestrian, red not\n"
+            "      --overlay-size     also draw the people's size as the tracker learns it: a\n"
+            "                         person's box at a few rows on both edges of the image\n"
             "  -p, --param NAME=VALUE set a tracker parameter (repeatable), see below\n"
             "      --progress         print progress on standard error (default when it is\n"
             "                         a terminal)\n"
@@ -171,9 +173,9 @@ static int check_combination(options *o)
         }
         o->cfg.source = CT_SOURCE_PIXELS;
     }
-    if (o->overlay_candidates && !o->overlay_path) {
-        fprintf(stderr, "ct-track: --overlay-candidates draws on the overlay: give --overlay "
-                        "FILE\n");
+    if ((o->overlay_candidates || o->overlay_size) && !o->overlay_path) {
+        fprintf(stderr, "ct-track: --overlay-%s draws on the overlay: give --overlay FILE\n",
+                o->overlay_candidates ? "candidates" : "size");
         return EXIT_USAGE;
     }
     if (o->overlay_path && !strcmp(o->overlay_path, "-") &&
@@ -199,7 +201,7 @@ int options_parse(int argc, char **argv, options *o)
 
     enum {
         OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
-        OPT_OVERLAY_CANDIDATES
+        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE
     };
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
@@ -210,6 +212,7 @@ int options_parse(int argc, char **argv, options *o)
         {"output", required_argument, NULL, 'o'},
         {"overlay", required_argument, NULL, OPT_OVERLAY},
         {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
+        {"overlay-size", no_argument, NULL, OPT_OVERLAY_SIZE},
         {"param", required_argument, NULL, 'p'},
         {"progress", no_argument, NULL, OPT_PROGRESS},
         {"stats", no_argument, NULL, OPT_STATS},
@@ -253,6 +256,7 @@ int options_parse(int argc, char **argv, options *o)
         case 'o': o->out_path = optarg; break;
         case OPT_OVERLAY: o->overlay_path = optarg; break;
         case OPT_OVERLAY_CANDIDATES: o->overlay_candidates = 1; break;
+        case OPT_OVERLAY_SIZE: o->overlay_size = 1; break;
         case 'p':
             if (set_param(&o->cfg, optarg) < 0)
                 return EXIT_USAGE;

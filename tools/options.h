@@ -17,7 +17,7 @@ typedef struct options {
     int width, height;       /* --size (raw video, or detections only) */
     uint32_t format;         /* --format of a raw video */
     double fps;              /* --fps, 0 when not given */
-    int no_pixels, progress, stats, overlay_candidates;
+    int no_pixels, progress, stats, overlay_candidates, overlay_size;
 } options;
 
 /* Reads the command line into *o. Returns -1 when ct-track should run, or

@@ -418,6 +418,32 @@ typedef struct ct_stats {
  * clear them. */
 CT_API int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats);
 
+/* ------------------------------------------------------------------------ */
+/* The people's size, as the tracker learns it (0.9.0). */
+
+/* A standing person whose feet are at image row y is about
+ * height_slope * y + height_intercept pixels tall (a static camera over
+ * flat ground; the fit to the boxes of confident single-person tracks), and
+ * three people in four there are under width_ratio times that wide. From
+ * the pixels alone it sets what counts as a speck, a fragment or a group. */
+typedef struct ct_person_size {
+    /* sizeof(ct_person_size) as the caller's header knows it; set it before
+     * the call. */
+    size_t size;
+    /* Non-zero once enough people were seen (until then the tracker knows
+     * only that people are 30 to 400 pixels tall, and the fields below are
+     * 0). */
+    int32_t known;
+    float height_slope, height_intercept;
+    float width_ratio;
+    /* The boxes seen so far. */
+    uint64_t samples;
+} ct_person_size;
+
+/* Fills *out (out->size must be set). ct_tracker_reset() forgets it, as a
+ * new frame size does. */
+CT_API int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out);
+
 /* The name of a stage ("predict", ...), or NULL for a value that is not one. */
 CT_API const char *ct_stage_name(int stage);
 

@@ -282,6 +282,21 @@ class Tracker:
                                                          ctypes.byref(count)))
         return np.frombuffer(buf, dtype=CANDIDATE_DTYPE, count=count.value).copy()
 
+    def person_size(self):
+        """What the tracker has learnt of its people's size (library 0.9.0
+        or newer): a dict with `known`, and the height in pixels of a
+        standing person whose feet are at row y, `height_slope * y +
+        height_intercept`, the `width_ratio` three people in four stay under,
+        and the `samples` seen. None with an older library."""
+        if not hasattr(self._lib, "ct_tracker_get_person_size"):
+            return None
+        s = _abi.PersonSize()
+        s.size = ctypes.sizeof(s)
+        self._check(self._lib.ct_tracker_get_person_size(self._handle(), ctypes.byref(s)))
+        return {"known": bool(s.known), "height_slope": s.height_slope,
+                "height_intercept": s.height_intercept, "width_ratio": s.width_ratio,
+                "samples": s.samples}
+
     def stats(self):
         """The library's counters: steps, feed time and time per stage (in
         seconds), live tracks and the heap bytes the tracker holds."""

@@ -150,6 +150,17 @@ class Stats(C.Structure):
     ]
 
 
+class PersonSize(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("known", C.c_int32),
+        ("height_slope", C.c_float),
+        ("height_intercept", C.c_float),
+        ("width_ratio", C.c_float),
+        ("samples", C.c_uint64),
+    ]
+
+
 def declare(lib):
     """Sets the argument and result types of every function of `lib`."""
     P = C.POINTER
@@ -173,6 +184,9 @@ def declare(lib):
         "ct_tracker_get_candidates": (C.c_int, [C.c_void_p, C.c_void_p, C.c_size_t, C.c_size_t,
                                                 P(C.c_size_t)]),
     }
+    # Added in 0.9.0: declared where the library has it.
+    if hasattr(lib, "ct_tracker_get_person_size"):
+        sig["ct_tracker_get_person_size"] = (C.c_int, [C.c_void_p, P(PersonSize)])
     for name, (res, args) in sig.items():
         f = getattr(lib, name)
         f.restype = res

@@ -143,7 +143,15 @@ else
     expect "overlay with candidates, detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" \
         -o /dev/null --overlay "$tmp/ovd.y4m" --overlay-candidates "$tmp/tud.y4m"
     same "no candidates to draw with detections" "$tmp/ovd.y4m" "$tmp/ov.y4m"
-    expect "overlay of a grey video" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov-gray.y4m" -s 640x480 -f gray "$tmp/tud.gray"
+    # The people's size, once learnt from the tracks, drawn on the edges.
+    expect "overlay with the person size" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null \
+        --overlay "$tmp/ovs.y4m" --overlay-size "$tmp/tud.y4m"
+    if cmp -s "$tmp/ovs.y4m" "$tmp/ov.y4m"; then
+        bad "overlay draws the person size" "same frames with and without"
+    else
+        ok "overlay draws the person size"
+    fi
+    expect "overlay of a grey video" 0 """" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov-gray.y4m" -s 640x480 -f gray "$tmp/tud.gray"
     if cmp -s "$tmp/ov.y4m" "$tmp/tud.y4m"; then bad "overlay draws" "frames unchanged"; else ok "overlay draws"; fi
     expect "overlay from standard input to standard output" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -o '$tmp/t.txt' --overlay - - < '$tmp/tud.y4m' > '$tmp/ov2.y4m'"
     same "overlay to standard output" "$tmp/ov2.y4m" "$tmp/ov.y4m"
@@ -245,6 +253,7 @@ expect "parameter set" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -p min_
 if cmp -s "$tmp/out" "$tmp/detonly.txt"; then bad "parameters change the result" "same tracks"; else ok "parameters change the result"; fi
 expect "overlay and tracks both on standard output" 2 "--overlay -" -- "$ct" -d "$tud/det/det.txt" --overlay -
 expect "candidates drawn on no overlay" 2 "--overlay FILE" -- "$ct" -d "$tud/det/det.txt" -s 640x480 --overlay-candidates
+expect "person size drawn on no overlay" 2 "--overlay-size draws" -- "$ct" -d "$tud/det/det.txt" -s 640x480 --overlay-size
 expect "overlay without a size" 1 "--size" -- "$ct" -d "$tud/det/det.txt" --overlay "$tmp/x.y4m"
 expect "overlay of detections only" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 --overlay "$tmp/grey.y4m"
 [ "$(head -n 1 "$tmp/grey.y4m")" = "YUV4MPEG2 W640 H480 F25:1 Ip A1:1 C420jpeg" ] && ok "overlay of detections only header" || bad "overlay of detections only header" "$(head -n 1 "$tmp/grey.y4m")"

@@ -57,6 +57,11 @@ int main(void)
     FIELD(ct_candidate, voters); FIELD(ct_candidate, region_distance);
     FIELD(ct_candidate, fill);
     FIELD(ct_candidate, top_width);
+    first = 0;
+    printf("}, \"PersonSize\": {\"sizeof\": %zu, ", sizeof(ct_person_size));
+    FIELD(ct_person_size, size); FIELD(ct_person_size, known);
+    FIELD(ct_person_size, height_slope); FIELD(ct_person_size, height_intercept);
+    FIELD(ct_person_size, width_ratio); FIELD(ct_person_size, samples);
     /* The constants the binding mirrors. */
     printf("}, \"Constants\": {\"FORMAT_NONE\": %u, \"FORMAT_I420\": %u, "
            "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "

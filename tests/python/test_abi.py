@@ -16,7 +16,8 @@ def layout():
     return json.loads(subprocess.run([exe], check=True, capture_output=True).stdout)
 
 
-@pytest.mark.parametrize("name", ["Config", "Frame", "Detection", "Track", "Stats", "Candidate"])
+@pytest.mark.parametrize("name", ["Config", "Frame", "Detection", "Track", "Stats", "Candidate",
+                                  "PersonSize"])
 def test_struct_layout(layout, name):
     cls = getattr(_abi, name)
     want = layout[name]

@@ -283,6 +283,28 @@ def test_pixels_alone_on_real_frames():
     assert seen > 20
 
 
+def test_person_size_is_learnt(tud_bgr):
+    """TUD-Campus from its public detections: the tracker learns how tall a
+    person is where they stand (a street-level camera: about 200 to 300
+    pixels at the bottom rows of the image, fewer higher up), from nothing;
+    a reset forgets it."""
+    frames, fps = tud_bgr
+    dets = load_dets("TUD-Campus")
+    with ctrack.Tracker(fps=fps) as t:
+        assert t.person_size()["known"] is False
+        for k, f in enumerate(frames):
+            t.feed(f, dets.get(k + 1, np.zeros((0, 5))))
+        p = t.person_size()
+        assert p["known"] and p["samples"] >= 20
+        height = lambda y: p["height_slope"] * y + p["height_intercept"]
+        assert 180 <= height(440) <= 320
+        assert height(300) < height(440)
+        assert 0.25 <= p["width_ratio"] <= 0.6
+        t.reset()
+        assert t.person_size() == {"known": False, "height_slope": 0.0,
+                                   "height_intercept": 0.0, "width_ratio": 0.0, "samples": 0}
+
+
 def test_verify_detections_on_real_frames():
     """TUD-Campus's first frames with their public detections, verified by the
     contour template: one vote per detection, in their order, with their

@@ -24,6 +24,8 @@ struct overlay_writer {
     uint8_t *y, *u, *v;
     trail trails[MAX_TRAILS];
     long long frame;
+    int has_size;
+    ct_person_size size;
 };
 
 /* 12 distinguishable colours as (Y, U, V), BT.601 limited range. */
@@ -185,11 +187,40 @@ static int clampi(double v, int lo, int hi)
     return (int)v;
 }
 
+void overlay_set_person_size(overlay_writer *ov, const ct_person_size *size)
+{
+    ov->has_size = size != NULL;
+    if (size)
+        ov->size = *size;
+}
+
+/* The people's size: at feet rows from a third of the image down, the box
+ * of a person standing there, yellow, on both edges. */
+static void draw_person_size(overlay_writer *ov)
+{
+    static const uint8_t yellow[3] = {210, 16, 146};
+    const ct_person_size *s = &ov->size;
+    if (!s->known)
+        return;
+    for (int k = 0; k < 4; k++) {
+        const double feet = ov->h * (0.4 + 0.18 * k);
+        const double tall = s->height_slope * feet + s->height_intercept;
+        if (!(tall >= 4) || tall > ov->h)
+            continue;
+        const int w = clampi(s->width_ratio * tall, 2, ov->w / 4);
+        const int y0 = clampi(feet - tall, 0, ov->h), y1 = clampi(feet, 0, ov->h);
+        frame_box(ov, 2, y0, 2 + w, y1, 1, yellow);
+        frame_box(ov, ov->w - 2 - w, y0, ov->w - 2, y1, 1, yellow);
+    }
+}
+
 int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
                      const ct_candidate *cands, size_t nc, char *err, size_t err_len)
 {
     ov->frame++;
     copy_planes(ov, frame);
+    if (ov->has_size)
+        draw_person_size(ov);
     static const uint8_t red[3] = {82, 90, 240}, dark[3] = {16, 128, 128};
     for (size_t i = 0; i < nc; i++) {
         const ct_candidate *c = &cands[i];

@@ -22,6 +22,11 @@ overlay_writer *overlay_open(const char *path, int w, int h, int rate_num, int r
 int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
                      const ct_candidate *cands, size_t nc, char *err, size_t err_len);
 
+/* Draws `size` (the people's size the tracker learnt, or NULL for none) on
+ * the frames written from now on: at a few rows, the box of a person whose
+ * feet are on that row, on the image's left and right edges. */
+void overlay_set_person_size(overlay_writer *ov, const ct_person_size *size);
+
 /* Closes the file; returns -1 with a message if a write failed. */
 int overlay_close(overlay_writer *ov, char *err, size_t err_len);
 

@@ -1,0 +1,64 @@
+// What the tracker learns of its people's size as it runs: a standing
+// person's height in pixels as a function of the image row of their feet.
+// On a static camera over a flat ground, that height is close to a * (y_foot
+// - y_horizon) (Renno, Orwell and Jones 2002; Hoiem, Efros and Hebert 2008);
+// the model fits that line robustly to the boxes of confident single-person
+// tracks, and until it has seen enough it only knows a weak prior: people
+// are 30 to 400 pixels tall.
+#ifndef CTRACK_PERSON_SIZE_H
+#define CTRACK_PERSON_SIZE_H
+
+#include <cstdint>
+
+namespace ctrack {
+
+class PersonSize {
+public:
+    // The prior: people are between these heights, in frame pixels.
+    static constexpr double kPriorMinHeight = 30, kPriorMaxHeight = 400;
+
+    // Forgets everything; the image is `image_height` rows tall.
+    void reset(int image_height);
+    // A box (frame pixels) believed to hold one whole standing person.
+    void observe(double top, double height, double width);
+    // Fits the line to what was observed (once a step; cheap).
+    void learn();
+
+    // Whether enough was observed for the fit to speak.
+    bool known() const { return known_; }
+    // The expected height (frame pixels) of a person whose feet are at row
+    // y, and the width three people in four there stay under; 0 while
+    // unknown.
+    double height_at(double y) const;
+    double width_at(double y) const { return aspect_ * height_at(y); }
+    // The smallest and largest height the model allows anywhere a person's
+    // feet may be (the prior's bounds while unknown).
+    double min_height() const;
+    double max_height() const;
+    // The fitted line: height = slope * y + intercept (frame pixels), and the
+    // samples behind it.
+    double slope() const { return slope_; }
+    double intercept() const { return intercept_; }
+    // Width over height: the ratio three people in four stay under.
+    double aspect() const { return aspect_; }
+    uint64_t samples() const { return samples_; }
+    int image_height() const { return image_height_; }
+
+private:
+    // Heights are kept per band of rows, as counts of log-spaced bins.
+    static constexpr int kBands = 16;
+    static constexpr int kBins = 48;
+    uint16_t hist_[kBands][kBins] = {};
+    uint32_t count_[kBands] = {};
+    double foot_sum_[kBands] = {}; // the band's feet rows, summed
+    uint16_t aspect_hist_[kBins] = {};
+    uint32_t aspect_count_ = 0;
+    int image_height_ = 0;
+    uint64_t samples_ = 0;
+    bool known_ = false;
+    double slope_ = 0, intercept_ = 0, aspect_ = 0.4;
+};
+
+} // namespace ctrack
+
+#endif
