@@ -145,12 +145,19 @@ def bgr_to_i420(image):
 class Tracker:
     """One tracker. Keyword parameters are the fields of ct_config
     (high_score, min_hits, lost_lifetime, ...; see docs/API.md), plus `fps`
-    (default 25), the rate assumed when feed() gets no timestamp."""
+    (default 25), the rate assumed when feed() gets no timestamp, and
+    `image_size` (width, height), the image the boxes lie in for steps
+    without pixels until a frame tells it (default unknown: (0, 0))."""
 
-    def __init__(self, fps=25.0, library=None, **params):
+    def __init__(self, fps=25.0, library=None, image_size=None, **params):
         self._lib = load(library)
         if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
             raise ValueError("fps: %r is not a positive rate" % (fps,))
+        if image_size is not None:
+            if (len(image_size) != 2 or
+                    not all(isinstance(v, int) and 0 <= v < 2**31 for v in image_size)):
+                raise ValueError("image_size: %r is not (width, height) in whole pixels"
+                                 % (image_size,))
         self.fps = float(fps)
         cfg = _abi.Config()
         self._lib.ct_config_default(ctypes.byref(cfg), ctypes.sizeof(cfg))
@@ -175,7 +182,7 @@ class Tracker:
         # Libraries from 0.8.0 take packed BGR and RGB frames themselves.
         self._packed = self._lib.ct_version_number() >= 0x000800
         self._last_ts = None
-        self._size = (0, 0)
+        self._size = tuple(image_size) if image_size is not None else (0, 0)
         self._out = (_abi.Track * 64)()
 
     # -- lifetime ----------------------------------------------------------

@@ -329,3 +329,21 @@ def test_verify_detections_on_real_frames():
         t.feed(None, det[det[:, 0] == 21][:, 2:7])
         assert len(t.candidates()) == 0
     assert voted > 20
+
+
+def test_image_size_for_steps_without_pixels():
+    # A person walks right to the edge of a 200-pixel-wide image and is not
+    # detected again: once the image is known, the track that leaves it
+    # ends at once; with no image size it lives on, lost.
+    def live_after(**kw):
+        with ctrack.Tracker(fps=10, **kw) as t:
+            for k in range(10):
+                t.feed(None, np.array([[60.0 + 10 * k, 50, 40, 100, 0.9]]))
+            for k in range(5):
+                t.feed(None, None)
+            return t.stats()["live_tracks"]
+    assert live_after(image_size=(200, 300)) == 0
+    assert live_after() == 1
+    for bad in ((200,), (200, -1), (200.0, 300), "wide"):
+        with pytest.raises(ValueError, match="image_size"):
+            ctrack.Tracker(image_size=bad)

@@ -1,0 +1,452 @@
+"""Tracks many recordings at once, each with its own tracker, on this
+machine's cores or on a Ray cluster.
+
+    python -m ctrack.batch INPUT... -o OUTDIR [--workers N] [--ray ADDRESS]
+
+Each INPUT is one of:
+- a video file ffmpeg reads (.mp4, .mkv, .avi, .mov, .webm, .y4m, ...): the
+  tracker finds people in the pixels, with detections beside it when there
+  are some: NAME.det.txt next to NAME.EXT, or det/det.txt in the video's
+  folder (MOTChallenge's layout); --pixels-only ignores them;
+- a detections file (MOTChallenge's frame,id,left,top,width,height,score,...,
+  frames from 1): tracked from the detections alone, the image's size and
+  rate from a seqinfo.ini beside it or in its parent folder (MOTChallenge's
+  SEQ/det/det.txt and SEQ/seqinfo.ini), else from --size and --fps;
+- a folder: a MOTChallenge sequence (it holds seqinfo.ini or det/det.txt:
+  its video if it has one, else its detections), or else every video and
+  .txt file directly inside it.
+
+OUTDIR gets one MOTChallenge file per input, NAME.txt, written as ct-track
+writes it (the same lines for the same input), and summary.csv: input,
+output, status (ok, skipped, failed), frames, tracks, seconds,
+frames_per_second, error. An output is written under a temporary name and
+renamed when complete, so a run stopped half way leaves no partial file, and
+a rerun skips the inputs whose output is there (--force tracks them again).
+A failed input (unreadable, truncated, bad detections) is reported in the
+summary and the others go on.
+
+From Python:
+
+    from ctrack.batch import run
+    results = run(["a.mp4", "b.mp4"], "out", workers=2)
+
+With --ray (or run(..., ray=ADDRESS)) the same tasks run on Ray: "auto"
+joins the cluster this machine belongs to, "local" starts one here, any
+other value is ray.init's address. Only file names and the results' small
+dicts travel between tasks: on a cluster of several machines the inputs,
+OUTDIR and libctrack must be at the same paths on every node (shared
+storage), and ctrack must be importable there. Ray is an optional
+dependency (pip install ray).
+"""
+import argparse
+import configparser
+import csv
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+VIDEO_EXTENSIONS = {".mp4", ".mkv", ".avi", ".mov", ".webm", ".y4m", ".mpg", ".mpeg", ".ts",
+                    ".m4v", ".mts", ".flv", ".wmv", ".ogv", ".h264", ".h265", ".hevc", ".mjpeg"}
+SUMMARY_FIELDS = ["input", "output", "status", "frames", "tracks", "seconds",
+                  "frames_per_second", "error"]
+
+
+class BatchError(Exception):
+    """A problem with the whole run (not with one input)."""
+
+
+# -- what each input is ------------------------------------------------------
+def _seqinfo(folder):
+    """imWidth, imHeight and frameRate of folder/seqinfo.ini, or None."""
+    path = os.path.join(folder, "seqinfo.ini")
+    if not os.path.isfile(path):
+        return None
+    ini = configparser.ConfigParser()
+    try:
+        ini.read(path)
+        s = ini["Sequence"]
+        return {"width": int(s["imWidth"]), "height": int(s["imHeight"]),
+                "fps": float(s["frameRate"])}
+    except (configparser.Error, KeyError, ValueError) as e:
+        raise ValueError("%s: not a MOTChallenge seqinfo.ini (%s)" % (path, e))
+
+
+def _is_sequence(folder):
+    return (os.path.isfile(os.path.join(folder, "seqinfo.ini")) or
+            os.path.isfile(os.path.join(folder, "det", "det.txt")))
+
+
+def _videos_in(folder):
+    return sorted(os.path.join(folder, f) for f in os.listdir(folder)
+                  if os.path.splitext(f)[1].lower() in VIDEO_EXTENSIONS and
+                  os.path.isfile(os.path.join(folder, f)))
+
+
+def _job(path, pixels_only=False, size=None, fps=None):
+    """One input as a task: a dict of plain values (it travels to workers)."""
+    job = {"input": path, "video": None, "detections": None, "size": size, "fps": fps}
+    if os.path.isdir(path):
+        folder = path.rstrip(os.sep) or path
+        videos = _videos_in(folder)
+        job["name"] = os.path.basename(os.path.abspath(folder))
+        if videos:
+            job["video"] = videos[0]
+        det = os.path.join(folder, "det", "det.txt")
+        if os.path.isfile(det) and not (pixels_only and videos):
+            job["detections"] = det
+        if not videos and not job["detections"]:
+            job["error"] = "%s: holds no video and no det/det.txt" % path
+        info_dir = folder
+    else:
+        stem, ext = os.path.splitext(path)
+        folder = os.path.dirname(os.path.abspath(path))
+        # A MOTChallenge sequence's files take the sequence's name.
+        if os.path.basename(folder) == "det" and os.path.isfile(
+                os.path.join(os.path.dirname(folder), "seqinfo.ini")):
+            job["name"] = os.path.basename(os.path.dirname(folder))
+            info_dir = os.path.dirname(folder)
+        elif os.path.isfile(os.path.join(folder, "seqinfo.ini")):
+            job["name"] = os.path.basename(folder)
+            info_dir = folder
+        else:
+            job["name"] = os.path.basename(stem)
+            info_dir = folder
+        if ext.lower() in VIDEO_EXTENSIONS:
+            job["video"] = path
+            if not pixels_only:
+                for det in (stem + ".det.txt", os.path.join(folder, "det", "det.txt")):
+                    if os.path.isfile(det):
+                        job["detections"] = det
+                        break
+        else:
+            job["detections"] = path
+    if job["video"] is None and job["detections"] and "error" not in job:
+        try:
+            info = _seqinfo(info_dir)
+        except ValueError as e:
+            info, job["error"] = None, str(e)
+        if info:
+            job["size"] = job["size"] or (info["width"], info["height"])
+            job["fps"] = job["fps"] or info["fps"]
+    return job
+
+
+def find_jobs(inputs, pixels_only=False, size=None, fps=None):
+    """The tasks for INPUT...: folders that are no sequence expand into the
+    videos and .txt files inside them. Two inputs that would write the same
+    output name are an error of the run."""
+    jobs = []
+    for path in inputs:
+        if os.path.isdir(path) and not _is_sequence(path):
+            inside = _videos_in(path) + sorted(
+                os.path.join(path, f) for f in os.listdir(path)
+                if f.endswith(".txt") and not f.endswith(".det.txt") and
+                os.path.isfile(os.path.join(path, f)))
+            jobs += [_job(p, pixels_only, size, fps) for p in inside]
+        elif not os.path.exists(path):
+            jobs.append({"input": path, "name": os.path.basename(path.rstrip(os.sep)) or path,
+                         "video": None, "detections": None, "size": size, "fps": fps,
+                         "error": "%s: no such file or folder" % path})
+        else:
+            jobs.append(_job(path, pixels_only, size, fps))
+    seen = {}
+    for j in jobs:
+        if j["name"] in seen:
+            raise BatchError("%s and %s would both write %s.txt: give them different names"
+                             % (seen[j["name"]], j["input"], j["name"]))
+        seen[j["name"]] = j["input"]
+    return jobs
+
+
+# -- one input ---------------------------------------------------------------
+def load_detections(path):
+    """A MOTChallenge detections file as {frame: (N, 5) float array of left,
+    top, width, height, score}, file order within a frame, and the last
+    frame. Checks what ct-track checks: numbers, frames from 1, finite
+    boxes with positive sizes."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if b"\0" in data:
+        raise ValueError("%s: holds a NUL byte: not a text file" % path)
+    rows = []
+    for n, line in enumerate(data.decode("utf-8", "replace").splitlines(), 1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        try:
+            v = [float(x) for x in line.split(",")[:7]]
+        except ValueError:
+            raise ValueError("%s:%d: not a detection (frame,id,left,top,width,height,"
+                             "score,...): '%.60s'" % (path, n, line))
+        if len(v) < 7:
+            raise ValueError("%s:%d: %d fields, a detection has at least 7" % (path, n, len(v)))
+        box = np.float32(v[2:7])
+        if (v[0] != int(v[0]) or not 1 <= v[0] <= 10000000 or not np.all(np.isfinite(box)) or
+                box[2] <= 0 or box[3] <= 0):
+            raise ValueError("%s:%d: frame %g, box %s: frames are whole numbers from 1, boxes "
+                             "finite with positive sizes" % (path, n, v[0], v[2:6]))
+        rows.append([v[0]] + v[2:7])
+    if not rows:
+        return {}, 0
+    a = np.array(rows, dtype=np.float64)
+    order = np.argsort(a[:, 0], kind="stable")
+    a = a[order]
+    frames = a[:, 0].astype(np.int64)
+    cuts = np.flatnonzero(np.diff(frames)) + 1
+    out = {int(chunk[0, 0]): chunk[:, 1:6] for chunk in np.split(a, cuts)}
+    return out, int(frames[-1])
+
+
+def _summary_of(path):
+    """Frames and tracks of a finished output (a rerun's skipped input)."""
+    frames, ids = 0, set()
+    with open(path) as f:
+        for line in f:
+            parts = line.split(",", 2)
+            if len(parts) >= 2:
+                frames = max(frames, int(parts[0]))
+                ids.add(parts[1])
+    return frames, len(ids)
+
+
+def track_one(job, outdir, params=None, library=None, force=False):
+    """Tracks one input (a dict from find_jobs()) into OUTDIR/NAME.txt and
+    returns its summary row. Never raises for a bad input: its error goes
+    in the row."""
+    import ctrack
+    from ctrack.video import Video, frame_time
+
+    out = os.path.join(outdir, job["name"] + ".txt")
+    row = {"input": job["input"], "output": out, "status": "failed", "frames": 0,
+           "tracks": 0, "seconds": 0.0, "frames_per_second": 0.0, "error": ""}
+    if job.get("error"):
+        row["error"] = job["error"]
+        return row
+    if not force and os.path.isfile(out):
+        row["status"] = "skipped"
+        row["frames"], row["tracks"] = _summary_of(out)
+        return row
+    tmp = os.path.join(outdir, ".%s.txt.%d.partial" % (job["name"], os.getpid()))
+    t0 = time.perf_counter()
+    ids = set()
+    frames = 0
+    video = None
+    try:
+        dets, last = load_detections(job["detections"]) if job["detections"] else ({}, 0)
+        params = dict(params or {})
+        if job["video"]:
+            video = Video(job["video"])
+            rate = (job["fps"], 1) if job["fps"] else video.rate
+            frame_iter = iter(video)
+            image_size = None
+        else:
+            rate = (job["fps"] or 25.0, 1)
+            frame_iter = (None for _ in range(last))
+            image_size = tuple(job["size"]) if job["size"] else None
+        if not job["detections"]:
+            params.setdefault("source", ctrack.SOURCE_PIXELS)
+        with ctrack.Tracker(fps=rate[0] / rate[1], library=library, image_size=image_size,
+                            **params) as t, open(tmp, "w") as f:
+            for k, frame in enumerate(frame_iter, 1):
+                tracks = t.feed(frame, dets.get(k), timestamp=frame_time(k, rate),
+                                format="i420" if frame is not None else None)
+                for line in ctrack.mot_lines(k, tracks):
+                    f.write(line + "\n")
+                ids.update(int(i) for i in tracks["id"])
+                frames = k
+        os.replace(tmp, out)
+    except Exception as e:  # one input's failure is its row's, not the run's
+        row["error"] = str(e) or type(e).__name__
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        return row
+    finally:
+        if video is not None:
+            video.close()
+    seconds = time.perf_counter() - t0
+    row.update(status="ok", frames=frames, tracks=len(ids), seconds=round(seconds, 3),
+               frames_per_second=round(frames / seconds, 1) if seconds > 0 else 0.0)
+    return row
+
+
+# -- many inputs -------------------------------------------------------------
+def _write_summary(outdir, rows):
+    tmp = os.path.join(outdir, ".summary.csv.partial")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, SUMMARY_FIELDS, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, os.path.join(outdir, "summary.csv"))
+
+
+class _Progress:
+    """Inputs done and frames/s on standard error: one line rewritten on a
+    terminal, a line every few seconds in a log."""
+
+    def __init__(self, total, stream=None, enabled=None):
+        self.stream = stream or sys.stderr
+        self.tty = self.stream.isatty()
+        self.enabled = self.tty if enabled is None else enabled
+        self.total, self.done, self.failed, self.frames = total, 0, 0, 0
+        self.t0 = self.last = time.monotonic()
+
+    def update(self, row, final=False):
+        self.done += 1
+        self.failed += row["status"] == "failed"
+        if row["status"] == "ok":
+            self.frames += row["frames"]
+        now = time.monotonic()
+        if not self.enabled or (not self.tty and not final and now - self.last < 5 and
+                                self.done < self.total):
+            return
+        self.last = now
+        rate = self.frames / max(1e-9, now - self.t0)
+        line = "ctrack.batch: %d/%d inputs, %d failed, %.0f frames/s" % (
+            self.done, self.total, self.failed, rate)
+        end = "\n" if not self.tty or self.done == self.total else ""
+        self.stream.write(("\r" if self.tty else "") + line + end)
+        self.stream.flush()
+
+
+def _ray_tasks(jobs, outdir, params, library, force, address, workers):
+    import ray  # optional: pip install ray
+
+    if address is not True and not ray.is_initialized():
+        env = {k: os.environ[k] for k in ("CTRACK_LIBRARY",) if k in os.environ}
+        if address == "local":
+            ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False,
+                     log_to_driver=False, runtime_env={"env_vars": env})
+        else:
+            ray.init(address=address, log_to_driver=False, runtime_env={"env_vars": env})
+    task = ray.remote(num_cpus=1)(track_one)
+    pending = [task.remote(j, outdir, params, library, force) for j in jobs]
+    while pending:
+        ready, pending = ray.wait(pending, num_returns=1)
+        yield ray.get(ready[0])
+
+
+def _local_tasks(jobs, outdir, params, library, force, workers):
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    workers = workers or os.cpu_count() or 1
+    if workers == 1:
+        for j in jobs:
+            yield track_one(j, outdir, params, library, force)
+        return
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        futures = [pool.submit(track_one, j, outdir, params, library, force) for j in jobs]
+        for fut in as_completed(futures):
+            yield fut.result()
+
+
+def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force=False,
+        pixels_only=False, size=None, fps=None, progress=None):
+    """Tracks every input into outdir (see the module's help) and returns
+    the summary rows, in the inputs' order. workers: processes (default:
+    the cores); ray: None for a local process pool, True to use the Ray
+    session this process already opened, or an address for ray.init
+    ("auto", "local", "ray://host:10001"); params: ct_config fields;
+    progress: None (on a terminal), True or False."""
+    jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
+    os.makedirs(outdir, exist_ok=True)
+    if ray:
+        tasks = _ray_tasks(jobs, outdir, params, library, force, ray, workers)
+    else:
+        tasks = _local_tasks(jobs, outdir, params, library, force, workers)
+    prog = _Progress(len(jobs), enabled=progress)
+    order = {j["input"]: i for i, j in enumerate(jobs)}
+    rows = []
+    for row in tasks:
+        rows.append(row)
+        rows.sort(key=lambda r: order[r["input"]])
+        _write_summary(outdir, rows)
+        prog.update(row, final=len(rows) == len(jobs))
+    if not jobs:
+        _write_summary(outdir, rows)
+    return rows
+
+
+def _size(text):
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+        if w > 0 and h > 0:
+            return (w, h)
+    except ValueError:
+        pass
+    raise argparse.ArgumentTypeError("%r is not WIDTHxHEIGHT" % text)
+
+
+def _param(text):
+    name, sep, value = text.partition("=")
+    if not sep:
+        raise argparse.ArgumentTypeError("%r is not NAME=VALUE" % text)
+    try:
+        return name, int(value)
+    except ValueError:
+        try:
+            return name, float(value)
+        except ValueError:
+            raise argparse.ArgumentTypeError("%s: %r is not a number" % (name, value))
+
+
+def main(argv=None):
+    doc = __doc__.split("\n\n")
+    ap = argparse.ArgumentParser(
+        prog="python -m ctrack.batch", description=doc[0],
+        epilog="\n\n".join(doc[1:]), formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("inputs", nargs="+", metavar="INPUT",
+                    help="videos, detections files or folders")
+    ap.add_argument("-o", "--output", required=True, metavar="OUTDIR")
+    ap.add_argument("-j", "--workers", type=int, metavar="N",
+                    help="tasks at once (default: the cores; with --ray local, its CPUs)")
+    ap.add_argument("--ray", metavar="ADDRESS",
+                    help="run on Ray: auto, local, or ray.init's address")
+    ap.add_argument("-p", "--param", type=_param, action="append", default=[],
+                    metavar="NAME=VALUE", help="a ct_config field, as ct-track -p")
+    ap.add_argument("--pixels-only", action="store_true",
+                    help="ignore detections files beside the videos")
+    ap.add_argument("-s", "--size", type=_size, metavar="WxH",
+                    help="image size of detections files without a seqinfo.ini")
+    ap.add_argument("-r", "--fps", type=float, metavar="RATE",
+                    help="frame rate: of detections files without a seqinfo.ini, and "
+                         "instead of each video's own")
+    ap.add_argument("--force", action="store_true",
+                    help="track again the inputs whose output is already there")
+    ap.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    ap.add_argument("--progress", action="store_true",
+                    help="progress even when standard error is not a terminal")
+    a = ap.parse_args(argv)
+    if a.workers is not None and a.workers < 1:
+        ap.error("--workers: %d is not a positive count" % a.workers)
+    if a.fps is not None and not (math.isfinite(a.fps) and a.fps > 0):
+        ap.error("--fps: %r is not a positive rate" % a.fps)
+    progress = False if a.quiet else (True if a.progress else None)
+    try:
+        rows = run(a.inputs, a.output, workers=a.workers, ray=a.ray, params=dict(a.param),
+                   force=a.force, pixels_only=a.pixels_only, size=a.size, fps=a.fps,
+                   progress=progress)
+    except BatchError as e:
+        print("ctrack.batch: %s" % e, file=sys.stderr)
+        return 2
+    except ImportError as e:
+        if a.ray:
+            print("ctrack.batch: --ray needs Ray: pip install ray (%s)" % e, file=sys.stderr)
+            return 2
+        raise
+    failed = [r for r in rows if r["status"] == "failed"]
+    for r in failed:
+        print("ctrack.batch: %s: %s" % (r["input"], r["error"]), file=sys.stderr)
+    if not a.quiet:
+        ok = sum(r["status"] == "ok" for r in rows)
+        skipped = sum(r["status"] == "skipped" for r in rows)
+        print("ctrack.batch: %d tracked, %d skipped, %d failed; summary in %s"
+              % (ok, skipped, len(failed), os.path.join(a.output, "summary.csv")),
+              file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

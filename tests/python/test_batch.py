@@ -1,0 +1,189 @@
+"""python -m ctrack.batch: many inputs, each with its own tracker, on a
+process pool or on Ray, give ct-track's output for each; a broken input is
+reported and the others complete; a rerun skips what is done."""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from conftest import DATA, TOP
+from ctrack import batch
+
+CT_TRACK = os.environ.get("CTRACK_CT_TRACK", os.path.join(TOP, "build", "tools", "ct-track"))
+SEQUENCES = sorted(os.listdir(DATA))
+
+
+def seqinfo(seq):
+    info = {}
+    with open(os.path.join(DATA, seq, "seqinfo.ini")) as f:
+        for line in f:
+            if "=" in line:
+                k, v = line.strip().split("=", 1)
+                info[k] = v
+    return info
+
+
+@pytest.fixture(scope="module")
+def expected(tmp_path_factory):
+    """ct-track's output for each sequence: from the detections alone, and
+    TUD-Campus from its video (decoded to Y4M by ffmpeg) with its
+    detections, and from the pixels alone."""
+    tmp = tmp_path_factory.mktemp("ct-track")
+    out = {}
+    for seq in SEQUENCES:
+        det = os.path.join(DATA, seq, "det", "det.txt")
+        path = str(tmp / (seq + ".txt"))
+        video = os.path.join(DATA, seq, "video.mp4")
+        if os.path.exists(video):
+            y4m = str(tmp / (seq + ".y4m"))
+            subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video, "-f", "yuv4mpegpipe",
+                            y4m], check=True)
+            subprocess.run([CT_TRACK, "-q", "-d", det, "-o", path, y4m], check=True)
+            pixels = str(tmp / (seq + "-pixels.txt"))
+            subprocess.run([CT_TRACK, "-q", "-o", pixels, y4m], check=True)
+            out[seq + " pixels"] = pixels
+        else:
+            info = seqinfo(seq)
+            subprocess.run([CT_TRACK, "-q", "-d", det, "-s",
+                            "%sx%s" % (info["imWidth"], info["imHeight"]), "-r",
+                            info["frameRate"], "-o", path], check=True)
+        out[seq] = path
+    return out
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def summary(outdir):
+    with open(os.path.join(outdir, "summary.csv")) as f:
+        return {os.path.basename(r["input"].rstrip(os.sep)): r for r in csv.DictReader(f)}
+
+
+def test_each_sequence_as_ct_track(tmp_path, expected):
+    folders = [os.path.join(DATA, s) for s in SEQUENCES]
+    rows = batch.run(folders, str(tmp_path), workers=2, progress=False)
+    assert [r["input"] for r in rows] == folders
+    for seq, row in zip(SEQUENCES, rows):
+        assert row["status"] == "ok", row
+        assert read(row["output"]) == read(expected[seq]), seq
+        assert row["frames"] > 0 and row["tracks"] > 0 and row["frames_per_second"] > 0
+    s = summary(str(tmp_path))
+    assert set(s) == set(SEQUENCES) and all(r["status"] == "ok" for r in s.values())
+    # No temporary file is left.
+    assert sorted(os.listdir(tmp_path)) == sorted([q + ".txt" for q in SEQUENCES] +
+                                                  ["summary.csv"])
+    # The pixels alone, through the command.
+    out = tmp_path / "pixels"
+    r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "--pixels-only", "-o",
+                        str(out), os.path.join(DATA, "TUD-Campus", "video.mp4")],
+                       capture_output=True, text=True, env=env())
+    assert r.returncode == 0, r.stderr
+    assert read(str(out / "TUD-Campus.txt")) == read(expected["TUD-Campus pixels"])
+
+
+def env():
+    e = dict(os.environ)
+    e["PYTHONPATH"] = os.path.join(TOP, "python") + os.pathsep + e.get("PYTHONPATH", "")
+    return e
+
+
+def test_broken_inputs_are_reported_and_the_rest_complete(tmp_path, expected):
+    src = tmp_path / "in"
+    src.mkdir()
+    # A video cut short, a detections file with a NaN box, a path that is
+    # not there, beside two good inputs.
+    with open(os.path.join(DATA, "TUD-Campus", "video.mp4"), "rb") as f:
+        data = f.read()
+    (src / "cut.mp4").write_bytes(data[: len(data) // 3])
+    (src / "nan.txt").write_text("1,-1,10,20,30,NaN,0.9\n")
+    good = os.path.join(DATA, "PETS09-S2L1")
+    out = tmp_path / "out"
+    r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-o", str(out), "-j", "2",
+                        str(src / "cut.mp4"), str(src / "nan.txt"), str(src / "missing.mp4"),
+                        good, os.path.join(DATA, "KITTI-13")],
+                       capture_output=True, text=True, env=env())
+    assert r.returncode == 1, r.stderr
+    s = summary(str(out))
+    for name, words in (("cut.mp4", "cut.mp4"), ("nan.txt", "nan.txt:1"),
+                        ("missing.mp4", "no such file")):
+        assert s[name]["status"] == "failed" and words in s[name]["error"], s[name]
+        assert "ctrack.batch: %s" % str(src / name) in r.stderr
+    assert s["PETS09-S2L1"]["status"] == "ok" and s["KITTI-13"]["status"] == "ok"
+    assert read(str(out / "PETS09-S2L1.txt")) == read(expected["PETS09-S2L1"])
+    assert sorted(os.listdir(out)) == ["KITTI-13.txt", "PETS09-S2L1.txt", "summary.csv"]
+    assert "2 tracked, 0 skipped, 3 failed" in r.stderr
+
+
+def test_a_rerun_skips_completed_inputs(tmp_path, expected):
+    folders = [os.path.join(DATA, s) for s in ("KITTI-13", "Venice-2")]
+    batch.run(folders, str(tmp_path), workers=1, progress=False)
+    done = tmp_path / "KITTI-13.txt"
+    before = done.stat().st_mtime_ns
+    os.remove(tmp_path / "Venice-2.txt")  # as if the first run stopped there
+    rows = batch.run(folders, str(tmp_path), workers=1, progress=False)
+    assert [r["status"] for r in rows] == ["skipped", "ok"]
+    assert done.stat().st_mtime_ns == before
+    assert rows[0]["frames"] == 340 and rows[0]["tracks"] > 0
+    assert read(str(tmp_path / "Venice-2.txt")) == read(expected["Venice-2"])
+    rows = batch.run(folders, str(tmp_path), workers=1, progress=False, force=True)
+    assert [r["status"] for r in rows] == ["ok", "ok"]
+    assert read(str(done)) == read(expected["KITTI-13"])
+
+
+def test_inputs_and_options(tmp_path, expected):
+    # A detections file alone takes its size and rate from the seqinfo.ini
+    # of its sequence, and the sequence's name; elsewhere, from the options
+    # (KITTI-13's tracks depend on the image's size: boxes leaving it).
+    det = os.path.join(DATA, "KITTI-13", "det", "det.txt")
+    rows = batch.run([det], str(tmp_path / "a"), workers=1, progress=False)
+    assert rows[0]["output"].endswith("KITTI-13.txt")
+    assert read(rows[0]["output"]) == read(expected["KITTI-13"])
+    loose = tmp_path / "loose.txt"
+    shutil.copy(det, loose)
+    info = seqinfo("KITTI-13")
+    rows = batch.run([str(loose)], str(tmp_path / "b"), workers=1, progress=False,
+                     size=(int(info["imWidth"]), int(info["imHeight"])),
+                     fps=float(info["frameRate"]))
+    assert read(rows[0]["output"]) == read(expected["KITTI-13"])
+    rows = batch.run([str(loose)], str(tmp_path / "b2"), workers=1, progress=False,
+                     fps=float(info["frameRate"]))
+    assert rows[0]["status"] == "ok" and read(rows[0]["output"]) != read(expected["KITTI-13"])
+    # Two inputs with one output name are refused before anything runs.
+    with pytest.raises(batch.BatchError, match="would both write"):
+        batch.run([det, str(tmp_path / "x" / "KITTI-13")], str(tmp_path / "c"))
+    r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-o", str(tmp_path / "d"), det,
+                        det], capture_output=True, text=True, env=env())
+    assert r.returncode == 2 and "would both write" in r.stderr
+    for bad in (["-j", "0"], ["-r", "nan"], ["-s", "10"], ["-p", "min_hits"]):
+        r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-o", str(tmp_path / "e")] +
+                           bad + [det], capture_output=True, text=True, env=env())
+        assert r.returncode == 2, (bad, r.stderr)
+    # A bad tracker parameter fails each input with the library's message.
+    rows = batch.run([det], str(tmp_path / "f"), params={"min_hits": -1}, progress=False)
+    assert rows[0]["status"] == "failed" and "min_hits" in rows[0]["error"]
+
+
+def test_on_ray(tmp_path, expected):
+    import ray
+    ray.init(num_cpus=2, object_store_memory=80 * 1024 * 1024, include_dashboard=False,
+             log_to_driver=False,
+             runtime_env={"env_vars": {"PYTHONPATH": os.path.join(TOP, "python"),
+                                       "CTRACK_LIBRARY": os.environ["CTRACK_LIBRARY"]}})
+    try:
+        folders = [os.path.join(DATA, s) for s in SEQUENCES]
+        rows = batch.run(folders, str(tmp_path), ray=True, progress=False)
+        for seq, row in zip(SEQUENCES, rows):
+            assert row["status"] == "ok", row
+            assert read(row["output"]) == read(expected[seq]), seq
+        # The tasks ran in Ray's worker processes, not here.
+        def pid():
+            return os.getpid()
+        pids = ray.get([ray.remote(pid).remote() for _ in range(4)])
+        assert os.getpid() not in pids
+    finally:
+        ray.shutdown()
