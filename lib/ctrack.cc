@@ -267,20 +267,32 @@ const char *ct_stage_name(int stage)
     }
 }
 
-int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
+// The checks of a getter that fills a size-prefixed struct: a tracker, a
+// struct, and a size from `oldest` (its first published layout) up to
+// kMaxStructSize (a newer header's). Returns CT_OK, or the error, set.
+static int check_out(const ct_tracker *tracker, const void *out, size_t size, size_t oldest,
+                     size_t now, const char *name, const char *type)
 {
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
     clear_error(tracker);
     if (!out)
         return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
-                            "out: NULL pointer");
-    const size_t size = out->size, v1 = sizeof(ct_person_size);
-    if (size < v1 || size > ctrack::kMaxStructSize)
+                            "%s: NULL pointer", name);
+    if (size < oldest || size > ctrack::kMaxStructSize)
         return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
-                            "out.size: %zu is not sizeof(ct_person_size) (%zu, or more from a "
-                            "newer header)",
-                            size, v1);
+                            "%s.size: %zu is not sizeof(%s) (%zu, or %zu from an older header, "
+                            "or more from a newer one)",
+                            name, size, type, now, oldest);
+    return CT_OK;
+}
+
+int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
+{
+    const size_t size = out ? out->size : 0;
+    if (const int st = check_out(tracker, out, size, sizeof(ct_person_size),
+                                 sizeof(ct_person_size), "out", "ct_person_size"))
+        return st;
     const ctrack::PersonSize &p = tracker->engine.person_size();
     ct_person_size s = {};
     s.size = size;
@@ -297,19 +309,11 @@ int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
 
 int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
 {
-    if (!tracker)
-        return CT_ERROR_INVALID_ARGUMENT;
-    clear_error(tracker);
-    if (!stats)
-        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
-                            "stats: NULL pointer");
     // The first published ct_stats (0.1.0) ended with memory_bytes.
-    const size_t size = stats->size, v1 = offsetof(ct_stats, mean_shift_runs);
-    if (size < v1 || size > ctrack::kMaxStructSize)
-        return ctrack::fail(tracker->error, sizeof tracker->error, CT_ERROR_INVALID_ARGUMENT,
-                            "stats.size: %zu is not sizeof(ct_stats) (%zu, or %zu from an "
-                            "older header, or more from a newer one)",
-                            size, sizeof(ct_stats), v1);
+    const size_t size = stats ? stats->size : 0;
+    if (const int st = check_out(tracker, stats, size, offsetof(ct_stats, mean_shift_runs),
+                                 sizeof(ct_stats), "stats", "ct_stats"))
+        return st;
     ct_stats s = {};
     s.size = size;
     s.steps = tracker->steps;
