@@ -62,8 +62,22 @@ void PixelCandidates::update_background(int64_t t_us, const Planes &img,
     background_.apply(t_us, img, frozen_.data(), (int)frozen_.size());
 }
 
+// CT_PEDESTRIAN_SIZE: the box's aspect and height against the people's
+// size, the filter eval/recognition.py compares with the template.
+static bool person_sized(const ct_candidate &c, const PersonSize &size)
+{
+    constexpr double kMinAspect = 1.0, kMaxAspect = 4.25, kLow = 0.5, kHigh = 1.5;
+    const double aspect = c.height / c.width;
+    if (!(aspect >= kMinAspect && aspect <= kMaxAspect))
+        return false;
+    if (!size.known())
+        return c.height >= PersonSize::kPriorMinHeight;
+    const double tall = size.height_at(c.top + c.height);
+    return c.height >= kLow * tall && c.height <= kHigh * tall;
+}
+
 void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
-                           const PersonSize &size, uint64_t *stage_ns)
+                           int test, const PersonSize &size, uint64_t *stage_ns)
 {
     dets_.clear();
     if (img.empty())
@@ -89,9 +103,11 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Tr
             background_.absorb(img, blobs_.cleaned(), r);
             continue;
         }
-        const ct_candidate c = classifier_.candidate(
+        ct_candidate c = classifier_.candidate(
             blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
             (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
+        if (test == CT_PEDESTRIAN_SIZE)
+            c.score = person_sized(c, size) ? 1.0f : 0.0f;
         candidates_.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));

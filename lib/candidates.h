@@ -25,7 +25,8 @@ public:
     // predicted to this frame: confirmed tracks that have moved freeze the
     // background under them, and tracks inside a blob split it. The time
     // of each stage goes to stage_ns.
-    void find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+    // `test` is a ct_pedestrian_test: what scores each candidate.
+    void find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks, int test,
               const PersonSize &size, uint64_t *stage_ns);
     // The vote on the foreground inside each of the n detections: one
     // candidate each, in order, and dets() the detections with the score of

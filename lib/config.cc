@@ -40,6 +40,7 @@ ct_config default_config()
     c.verify_detections = 0;
     c.start_score = 0.8f;
     c.report_lost_sd = 0.08f;
+    c.pedestrian_test = CT_PEDESTRIAN_TEMPLATE;
     return c;
 }
 
@@ -171,6 +172,11 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     if (!in_range(c.report_lost_sd, 0, 10))
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.report_lost_sd: %g is not in [0, 10]", (double)c.report_lost_sd);
+    if (c.pedestrian_test != CT_PEDESTRIAN_TEMPLATE && c.pedestrian_test != CT_PEDESTRIAN_SIZE)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.pedestrian_test: %d is not CT_PEDESTRIAN_TEMPLATE (0) or "
+                    "CT_PEDESTRIAN_SIZE (1)",
+                    (int)c.pedestrian_test);
     if (out)
         *out = c;
     return CT_OK;

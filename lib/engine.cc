@@ -292,7 +292,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     stage_ns_[CT_STAGE_PREDICT] += sw.lap();
     pixels_.clear();
     if (cfg_.source == CT_SOURCE_PIXELS) {
-        pixels_.find(t_us, img, tracks_, size_, stage_ns_);
+        pixels_.find(t_us, img, tracks_, cfg_.pedestrian_test, size_, stage_ns_);
         dets = pixels_.dets().data();
         n = pixels_.dets().size();
         sw.lap();

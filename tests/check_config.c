@@ -122,6 +122,8 @@ typedef struct {
 static void bad_source(ct_config *c) { c->source = 7; }
 static void low_candidate_score(ct_config *c) { c->candidate_min_score = c->low_score / 2; }
 static void verify_two(ct_config *c) { c->verify_detections = 2; }
+static void test_two(ct_config *c) { c->pedestrian_test = 2; }
+static void test_negative(ct_config *c) { c->pedestrian_test = -1; }
 static void nan_high(ct_config *c) { c->high_score = NAN; }
 static void high_above_one(ct_config *c) { c->high_score = 1.5f; }
 static void low_above_high(ct_config *c) { c->low_score = c->high_score + 0.1f; }
@@ -157,6 +159,8 @@ static const bad_case bad_cases[] = {
     {"config.source", bad_source, CT_ERROR_INVALID_ARGUMENT},
     {"config.candidate_min_score", low_candidate_score, CT_ERROR_INVALID_ARGUMENT},
     {"config.verify_detections", verify_two, CT_ERROR_INVALID_ARGUMENT},
+    {"config.pedestrian_test", test_two, CT_ERROR_INVALID_ARGUMENT},
+    {"config.pedestrian_test", test_negative, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", nan_high, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", high_above_one, CT_ERROR_INVALID_ARGUMENT},
     {"config.low_score", low_above_high, CT_ERROR_INVALID_ARGUMENT},

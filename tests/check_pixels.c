@@ -758,6 +758,54 @@ START_TEST(person_size_learnt_from_walkers_at_two_depths)
 }
 END_TEST
 
+/* pedestrian_test = CT_PEDESTRIAN_SIZE: from the pixels alone, each
+ * candidate scores 1 or 0 by its size and aspect. A person walks and a car
+ * drives by; the car's blob, wider than a person, is split into parts of a
+ * person's width and height. The template rejects those parts (they have
+ * no head, no legs); size and aspect alone take them for people. Both take
+ * the person for one. */
+START_TEST(size_test_scores_by_size_and_aspect)
+{
+    int car_yes[2] = {0, 0};
+    for (int test = CT_PEDESTRIAN_TEMPLATE; test <= CT_PEDESTRIAN_SIZE; test++) {
+        ct_config cfg = test_config();
+        cfg.source = CT_SOURCE_PIXELS;
+        cfg.pedestrian_test = test;
+        ct_tracker *t = test_tracker(&cfg);
+        static image im;
+        ct_track out[64];
+        ct_candidate cand[32];
+        size_t nc = 0;
+        const double cx = 40 + 5.0 * 19;
+        for (int k = 0; k < 20; k++) {
+            draw(&im, -1, 0);
+            draw_pedestrian(&im, 40 + 5.0 * k, 45);
+            draw_car(&im, 200 - 4 * k, 170);
+            step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        }
+        ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+        int person = 0, car = 0;
+        for (size_t i = 0; i < nc; i++) {
+            if (test == CT_PEDESTRIAN_SIZE)
+                ck_assert(cand[i].score == 0.0f || cand[i].score == 1.0f);
+            if (fabs(cand[i].left + cand[i].width / 2 - cx) < 10 && cand[i].top < 60) {
+                person++;
+                ck_assert_float_gt(cand[i].score, 0.5f);
+            }
+            if (cand[i].top >= 160) {
+                car++;
+                car_yes[test] += cand[i].score > 0.5f;
+            }
+        }
+        ck_assert_msg(person == 1 && car >= 2, "test %d: %d people and %d car parts among %zu",
+                      test, person, car, nc);
+        ct_tracker_destroy(t);
+    }
+    ck_assert_int_eq(car_yes[CT_PEDESTRIAN_TEMPLATE], 0);
+    ck_assert_int_ge(car_yes[CT_PEDESTRIAN_SIZE], 2);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -776,6 +824,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, verify_detections_rejects_a_car);
     tcase_add_test(tc, packed_colour_frames_track_as_their_planes);
     tcase_add_test(tc, person_size_learnt_from_walkers_at_two_depths);
+    tcase_add_test(tc, size_test_scores_by_size_and_aspect);
     suite_add_tcase(s, tc);
     return s;
 }

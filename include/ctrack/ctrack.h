@@ -90,6 +90,18 @@ typedef enum ct_source {
     CT_SOURCE_PIXELS = 1
 } ct_source;
 
+/* From the pixels alone, what decides that a blob is a pedestrian (0.9.0). */
+typedef enum ct_pedestrian_test {
+    /* The contour template: its nine regions' vote and its vetoes. The
+     * default. */
+    CT_PEDESTRIAN_TEMPLATE = 0,
+    /* The blob's size and aspect alone, for comparison: height over width
+     * from 1 to 4.25 and a height from half to one and a half times the
+     * learnt person's where its feet are (at least 30 pixels while the
+     * size is not known). */
+    CT_PEDESTRIAN_SIZE = 1
+} ct_pedestrian_test;
+
 typedef struct ct_config {
     /* sizeof(ct_config) as the caller's header knows it. */
     size_t size;
@@ -199,6 +211,10 @@ typedef struct ct_config {
      * heights down. 0 reports every lost track within report_lost_time.
      * In [0, 10]. */
     float report_lost_sd;
+    /* With source CT_SOURCE_PIXELS: a ct_pedestrian_test, what gives each
+     * candidate its score (1 or 0 with CT_PEDESTRIAN_SIZE; the candidates'
+     * votes and distances are reported either way). */
+    int32_t pedestrian_test;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the

@@ -20,10 +20,10 @@ import numpy as np
 
 from . import _abi
 from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
-                   SOURCE_DETECTIONS, SOURCE_PIXELS)
+                   SOURCE_DETECTIONS, SOURCE_PIXELS, PEDESTRIAN_TEMPLATE, PEDESTRIAN_SIZE)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
 #: The version of the header this package mirrors (the library it loads
 #: may be newer: version() tells).

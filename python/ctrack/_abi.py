@@ -21,6 +21,8 @@ ERROR_INTERNAL = -6
 
 SOURCE_DETECTIONS = 0
 SOURCE_PIXELS = 1
+PEDESTRIAN_TEMPLATE = 0
+PEDESTRIAN_SIZE = 1
 
 
 def fourcc(s):
@@ -68,6 +70,7 @@ class Config(C.Structure):
         ("verify_detections", C.c_int32),
         ("start_score", C.c_float),
         ("report_lost_sd", C.c_float),
+        ("pedestrian_test", C.c_int32),
     ]
 
 

@@ -24,7 +24,7 @@ int main(void)
     FIELD(ct_config, reid_max_speed); FIELD(ct_config, candidate_min_score);
     FIELD(ct_config, verify_detections);
     FIELD(ct_config, start_score);
-    FIELD(ct_config, report_lost_sd);
+    FIELD(ct_config, report_lost_sd); FIELD(ct_config, pedestrian_test);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);
@@ -66,11 +66,13 @@ int main(void)
     printf("}, \"Constants\": {\"FORMAT_NONE\": %u, \"FORMAT_I420\": %u, "
            "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "
            "\"FORMAT_RGB24\": %u, \"SOURCE_DETECTIONS\": %d, \"SOURCE_PIXELS\": %d, "
-           "\"TRACK_TENTATIVE\": %d, \"TRACK_CONFIRMED\": %d, \"TRACK_LOST\": %d",
+           "\"TRACK_TENTATIVE\": %d, \"TRACK_CONFIRMED\": %d, \"TRACK_LOST\": %d, "
+           "\"PEDESTRIAN_TEMPLATE\": %d, \"PEDESTRIAN_SIZE\": %d",
            (unsigned)CT_FORMAT_NONE, (unsigned)CT_FORMAT_I420, (unsigned)CT_FORMAT_NV12,
            (unsigned)CT_FORMAT_GRAY8, (unsigned)CT_FORMAT_BGR24, (unsigned)CT_FORMAT_RGB24,
            (int)CT_SOURCE_DETECTIONS, (int)CT_SOURCE_PIXELS, (int)CT_TRACK_TENTATIVE,
-           (int)CT_TRACK_CONFIRMED, (int)CT_TRACK_LOST);
+           (int)CT_TRACK_CONFIRMED, (int)CT_TRACK_LOST, (int)CT_PEDESTRIAN_TEMPLATE,
+           (int)CT_PEDESTRIAN_SIZE);
     printf("}}\n");
     return 0;
 }
