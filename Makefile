@@ -4,7 +4,7 @@ BUILD ?= build
 MESON_OPTS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps check demo install clean eval bench sanitize
+.PHONY: all deps check demo install clean eval bench sanitize tsan
 
 # Every verb first installs the Debian packages that are missing (a quick
 # dpkg query when nothing is).
@@ -38,6 +38,17 @@ sanitize: deps
 	    meson test -C $(SANITIZE_BUILD) --suite lib --suite cli --suite python --suite replay \
 	    --print-errorlogs
 
+# The thread tests under ThreadSanitizer (GCC's): trackers in several
+# threads at once, on the public detections and on TUD-Campus's frames in
+# the three modes, each giving what it gives alone, with no data race
+# reported (TSan stops at its first report).
+TSAN_BUILD ?= build-tsan
+tsan: deps
+	@[ -f $(TSAN_BUILD)/build.ninja ] || meson setup $(TSAN_BUILD) \
+	    -Db_sanitize=thread -Dbuildtype=debugoptimized $(MESON_OPTS)
+	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+	    meson test -C $(TSAN_BUILD) threads pixels --print-errorlogs
+
 # meson does not refresh the loader's cache: without ldconfig, programs
 # linked to the new library (and `import ctrack`) would not find it.
 install: all
@@ -46,7 +57,7 @@ install: all
 	    ldconfig; fi
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD)
 
 # Both run in their own venv (scripts/venv.sh eval), created on first use.
 eval: all
