@@ -4,7 +4,7 @@ BUILD ?= build
 MESON_OPTS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps check demo install clean eval bench sanitize tsan
+.PHONY: all deps check demo install clean eval bench sanitize tsan soak
 
 # Every verb first installs the Debian packages that are missing (a quick
 # dpkg query when nothing is).
@@ -65,3 +65,10 @@ eval: all
 
 bench: all
 	"$$(scripts/venv.sh eval)" bench/bench.py $(BUILD)
+
+# One tracker for a million frames of detections and 100,000 frames of
+# pixels: memory and time per frame at the start, middle and end; fails if
+# the memory grows past 2 MiB from the middle to the end (make check runs a
+# short one, the test `soak`).
+soak: all
+	$(BUILD)/bench/ct-soak 1000000 100000 2048
