@@ -183,9 +183,10 @@ def load_detections(path):
                              "score,...): '%.60s'" % (path, n, line))
         if len(v) < 7:
             raise ValueError("%s:%d: %d fields, a detection has at least 7" % (path, n, len(v)))
-        box = np.float32(v[2:7])
-        if (v[0] != int(v[0]) or not 1 <= v[0] <= 10000000 or not np.all(np.isfinite(box)) or
-                box[2] <= 0 or box[3] <= 0):
+        with np.errstate(over="ignore"):  # past a float: infinite, refused below
+            box = np.array(v[2:7], dtype=np.float32)
+        if (not 1 <= v[0] <= 10000000 or v[0] != math.floor(v[0]) or
+                not np.all(np.isfinite(box)) or box[2] <= 0 or box[3] <= 0):
             raise ValueError("%s:%d: frame %g, box %s: frames are whole numbers from 1, boxes "
                              "finite with positive sizes" % (path, n, v[0], v[2:6]))
         rows.append([v[0]] + v[2:7])
@@ -227,7 +228,10 @@ def track_one(job, outdir, params=None, library=None, force=False):
         return row
     if not force and os.path.isfile(out):
         row["status"] = "skipped"
-        row["frames"], row["tracks"] = _summary_of(out)
+        try:
+            row["frames"], row["tracks"] = _summary_of(out)
+        except (OSError, ValueError):  # not ct-track's lines: counted as none
+            pass
         return row
     tmp = os.path.join(outdir, ".%s.txt.%d.partial" % (job["name"], os.getpid()))
     t0 = time.perf_counter()
