@@ -21,6 +21,8 @@ typedef struct {
 
 static void record(run *r, const ct_track *t, size_t n)
 {
+    if (n == 0)
+        return;
     if (r->count + n > r->cap) {
         r->cap = (r->count + n) * 2;
         r->out = realloc(r->out, r->cap * sizeof *r->out);
