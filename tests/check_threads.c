@@ -14,6 +14,9 @@ typedef struct {
     const char *seq;
     int width, height;
     double fps;
+    /* 0 detections only; with TUD-Campus's frames (load_tud_frames()),
+     * 1 detections + pixels, 2 pixels only. */
+    int mode;
     ct_track *out;   /* every reported track of every frame, in order */
     size_t count, cap;
     int status;
@@ -31,6 +34,11 @@ static void record(run *r, const ct_track *t, size_t n)
     r->count += n;
 }
 
+/* TUD-Campus's frames, I420, decoded once by ffmpeg for every thread. */
+enum { TUD_W = 640, TUD_H = 480, TUD_FRAME = TUD_W * TUD_H * 3 / 2 };
+static uint8_t *tud_frames;
+static int tud_count;
+
 static void *replay(void *arg)
 {
     run *r = arg;
@@ -44,18 +52,36 @@ static void *replay(void *arg)
     }
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
+    if (r->mode == 2)
+        cfg.source = CT_SOURCE_PIXELS;
     ct_tracker *t = NULL;
-    if (ct_tracker_create(&cfg, &t) != CT_OK)
+    if (ct_tracker_create(&cfg, &t) != CT_OK) {
+        detfile_free(&df);
         return NULL;
+    }
     ct_track tracks[256];
-    for (int k = 1; k <= df.max_frame; k++) {
+    const int frames = r->mode > 0 ? tud_count : df.max_frame;
+    for (int k = 1; k <= frames; k++) {
         ct_frame f;
         ct_frame_default(&f, sizeof f);
         f.width = r->width;
         f.height = r->height;
         f.timestamp_us = (int64_t)((k - 1) * 1e6 / r->fps);
+        if (r->mode > 0) {
+            uint8_t *y = tud_frames + (size_t)(k - 1) * TUD_FRAME;
+            f.format = CT_FORMAT_I420;
+            f.planes[0] = y;
+            f.planes[1] = y + TUD_W * TUD_H;
+            f.planes[2] = y + TUD_W * TUD_H * 5 / 4;
+            f.strides[0] = TUD_W;
+            f.strides[1] = f.strides[2] = TUD_W / 2;
+        }
         size_t n, count;
         const ct_detection *d = detfile_frame(&df, k, &n);
+        if (r->mode == 2) {
+            d = NULL;
+            n = 0;
+        }
         if (ct_tracker_feed(t, &f, d, n) != CT_OK ||
             ct_tracker_get_tracks(t, tracks, 256, sizeof tracks[0], &count) != CT_OK)
             goto out;
@@ -126,11 +152,6 @@ START_TEST(two_threads_match_one_after_the_other)
 }
 END_TEST
 
-/* TUD-Campus's frames, I420, decoded once by ffmpeg for every thread. */
-enum { TUD_W = 640, TUD_H = 480, TUD_FRAME = TUD_W * TUD_H * 3 / 2 };
-static uint8_t *tud_frames;
-static int tud_count;
-
 static void load_tud_frames(void)
 {
     char cmd[1400];
@@ -154,93 +175,34 @@ static void load_tud_frames(void)
     ck_assert_int_eq(tud_count, 71);
 }
 
-typedef struct {
-    int mode; /* 0 detections, 1 detections + pixels, 2 pixels only */
-    run r;
-} frame_run;
-
-static void *replay_frames(void *arg)
-{
-    frame_run *fr = arg;
-    run *r = &fr->r;
-    char path[1024], err[512];
-    snprintf(path, sizeof path, "%s/TUD-Campus/det/det.txt", data_dir);
-    det_file df;
-    r->status = -1;
-    if (detfile_load(path, &df, err, sizeof err) < 0)
-        return NULL;
-    ct_config cfg;
-    ct_config_default(&cfg, sizeof cfg);
-    if (fr->mode == 2)
-        cfg.source = CT_SOURCE_PIXELS;
-    ct_tracker *t = NULL;
-    if (ct_tracker_create(&cfg, &t) != CT_OK) {
-        detfile_free(&df);
-        return NULL;
-    }
-    ct_track tracks[256];
-    for (int k = 1; k <= tud_count; k++) {
-        ct_frame f;
-        ct_frame_default(&f, sizeof f);
-        f.width = TUD_W;
-        f.height = TUD_H;
-        f.timestamp_us = (int64_t)(k - 1) * 40000;
-        size_t n = 0, count;
-        const ct_detection *d = detfile_frame(&df, k, &n);
-        if (fr->mode > 0) {
-            uint8_t *y = tud_frames + (size_t)(k - 1) * TUD_FRAME;
-            f.format = CT_FORMAT_I420;
-            f.planes[0] = y;
-            f.planes[1] = y + TUD_W * TUD_H;
-            f.planes[2] = y + TUD_W * TUD_H * 5 / 4;
-            f.strides[0] = TUD_W;
-            f.strides[1] = f.strides[2] = TUD_W / 2;
-        }
-        if (fr->mode == 2)
-            n = 0;
-        if (ct_tracker_feed(t, &f, fr->mode == 2 ? NULL : d, n) != CT_OK ||
-            ct_tracker_get_tracks(t, tracks, 256, sizeof tracks[0], &count) != CT_OK)
-            goto out;
-        record(r, tracks, count);
-    }
-    r->status = 0;
-out:
-    ct_tracker_destroy(t);
-    detfile_free(&df);
-    return NULL;
-}
-
 /* Four threads on TUD-Campus's frames at once, in the three modes (one
  * mode twice), give what each gives alone. */
 START_TEST(four_threads_on_real_frames)
 {
     load_tud_frames();
-    frame_run alone[3];
+    run alone[3];
     for (int m = 0; m < 3; m++) {
-        memset(&alone[m], 0, sizeof alone[m]);
+        alone[m] = make_run("TUD-Campus", TUD_W, TUD_H, 25);
         alone[m].mode = m;
-        replay_frames(&alone[m]);
-        ck_assert_int_eq(alone[m].r.status, 0);
+        replay(&alone[m]);
+        ck_assert_int_eq(alone[m].status, 0);
+        ck_assert_uint_gt(alone[m].count, 50);
     }
-    frame_run par[4];
+    run par[4];
     pthread_t th[4];
     for (int i = 0; i < 4; i++) {
-        memset(&par[i], 0, sizeof par[i]);
+        par[i] = make_run("TUD-Campus", TUD_W, TUD_H, 25);
         par[i].mode = i % 3;
-        ck_assert_int_eq(pthread_create(&th[i], NULL, replay_frames, &par[i]), 0);
+        ck_assert_int_eq(pthread_create(&th[i], NULL, replay, &par[i]), 0);
     }
     for (int i = 0; i < 4; i++)
         pthread_join(th[i], NULL);
     for (int i = 0; i < 4; i++) {
-        const run *a = &alone[i % 3].r, *b = &par[i].r;
-        ck_assert_int_eq(b->status, 0);
-        ck_assert_uint_gt(a->count, 50);
-        ck_assert_uint_eq(a->count, b->count);
-        ck_assert_mem_eq(a->out, b->out, a->count * sizeof *a->out);
-        free(par[i].r.out);
+        assert_same(&alone[i % 3], &par[i]);
+        free(par[i].out);
     }
     for (int m = 0; m < 3; m++)
-        free(alone[m].r.out);
+        free(alone[m].out);
     free(tud_frames);
     tud_frames = NULL;
     tud_count = 0;
