@@ -4,9 +4,23 @@
 # Debian's python3 imports.
 #   install-deps.sh          install what is missing (uses sudo when not root)
 #   install-deps.sh --check  exit 1 if something is missing, installing nothing
+#   install-deps.sh --arm64 [--check]
+#                            what make cross-arm64 adds: the aarch64 cross
+#                            compilers, qemu-user, and through multiarch the
+#                            arm64 -dev packages (FLANN's headers are the build
+#                            machine's: libflann-dev:arm64 would pull in MPI
+#                            packages that cannot sit beside the amd64 ones)
 set -eu
 packages="gcc g++ make pkg-config meson ninja-build check python3 python3-venv python3-numpy ffmpeg
 libopencv-core-dev libopencv-imgproc-dev libopencv-video-dev libflann-dev liblz4-dev"
+arm64=""
+if [ "${1:-}" = "--arm64" ]; then
+    shift
+    arm64=yes
+    packages="$packages gcc-aarch64-linux-gnu g++-aarch64-linux-gnu qemu-user
+libopencv-core-dev:arm64 libopencv-imgproc-dev:arm64 libopencv-video-dev:arm64
+liblz4-dev:arm64 check:arm64"
+fi
 
 missing=""
 for p in $packages; do
@@ -28,6 +42,9 @@ if [ "$(id -u)" -ne 0 ]; then
     sudo=sudo
 fi
 export DEBIAN_FRONTEND=noninteractive
+if [ -n "$arm64" ] && ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    $sudo dpkg --add-architecture arm64
+fi
 $sudo apt-get update -qq
 # shellcheck disable=SC2086
 $sudo apt-get install -y -qq --no-install-recommends $missing

@@ -4,9 +4,11 @@
 # for byte, and refuses bad arguments and a frame cut short.
 #   example_frames.sh TRACK_FRAMES CT_TRACK TUD_Y4M
 set -eu
-ex=$1 ct=$2 y4m=$3
+y4m=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/wrap.sh"
+ex=$(wrap "$1" "$tmp") ct=$(wrap "$2" "$tmp")
 ffmpeg -v error -i "$y4m" -f rawvideo -pix_fmt yuv420p "$tmp/tud.i420"
 "$ex" 640 480 25 < "$tmp/tud.i420" > "$tmp/example.txt"
 "$ct" -q -r 25 "$y4m" > "$tmp/ct.txt"

@@ -3,11 +3,12 @@
 # message and exit status. Uses the real TUD-Campus video and detections.
 #   test_cli.sh CT_TRACK DATA_DIR
 set -u
-ct=$1
 data=$2
 tud=$data/TUD-Campus
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/../lib/wrap.sh"
+ct=$(wrap "$1" "$tmp")
 passed=0 failed=0
 
 ok() { passed=$((passed + 1)); echo "ok   $1"; }
