@@ -4,7 +4,7 @@ BUILD ?= build
 MESON_OPTS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps check demo install clean eval bench sanitize tsan soak cross-arm64
+.PHONY: all deps check demo install clean eval bench sanitize tsan soak cross-arm64 fuzz
 
 # Every verb first installs the Debian packages that are missing (a quick
 # dpkg query when nothing is).
@@ -56,6 +56,16 @@ install: all
 	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig > /dev/null; then \
 	    ldconfig; fi
 
+# The libFuzzer targets of tests/fuzz (the tracker's C interface, the video
+# readers, the detection-file parser), built with clang, ASan and UBSan in
+# build-fuzz, each run FUZZ_SECONDS from corpora seeded by tests/data; prints
+# executions and coverage (scripts/fuzz.sh). CI runs a short pass.
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	@scripts/install-deps.sh --fuzz --check 2>/dev/null || scripts/install-deps.sh --fuzz
+	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 # The library, ct-track, the examples and the C suites built for 64-bit ARM
 # (cross/aarch64-linux-gnu.txt), with the Debian packages that takes; the C
 # suites, the CLI tests and the soak run under qemu-aarch64, then ten
@@ -73,7 +83,7 @@ cross-arm64: all
 	tests/cross_compare.sh $(BUILD)/tools/ct-track $(ARM64_BUILD)/tools/ct-track tests/data/mot15
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(ARM64_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(TSAN_BUILD) $(ARM64_BUILD) $(FUZZ_BUILD)
 
 # Both run in their own venv (scripts/venv.sh eval), created on first use.
 eval: all

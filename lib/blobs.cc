@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <new>
 
 #include <opencv2/imgproc.hpp>
 
@@ -43,6 +44,21 @@ constexpr double kMinCentreGap = 0.2;
 // docs/tuning.md has the choice).
 constexpr double kHeadDip = 0.06;
 
+// Runs OpenCV calls that allocate. OpenCV reports a failed allocation as
+// cv::Exception (StsNoMem); the library's callers know it as
+// std::bad_alloc, which ct_tracker_feed() turns into
+// CT_ERROR_OUT_OF_MEMORY (tests/check_oom.cc fails OpenCV's mallocs).
+template <typename F> void allocating(F &&f)
+{
+    try {
+        f();
+    } catch (const cv::Exception &e) {
+        if (e.code == cv::Error::StsNoMem)
+            throw std::bad_alloc();
+        throw;
+    }
+}
+
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
     int o = std::min(a.x1, b.x1) - std::max(a.x0, b.x0);
@@ -67,7 +83,10 @@ struct BlobFinder::Impl {
     std::vector<float> votes;
 };
 
-BlobFinder::BlobFinder() : impl_(new Impl) {}
+BlobFinder::BlobFinder()
+{
+    allocating([&] { impl_.reset(new Impl); });
+}
 BlobFinder::~BlobFinder() = default;
 
 const uint8_t *BlobFinder::cleaned() const
@@ -106,7 +125,7 @@ void BlobFinder::clean(const uint8_t *mask, int w, int h)
     // Closing only: an opening, even 3 x 3, erases legs a few working
     // pixels wide, and the boxes lose them (docs/notes/pixels.md). Specks
     // are dropped by area in find().
-    cv::morphologyEx(in, m.clean, cv::MORPH_CLOSE, m.close_k);
+    allocating([&] { cv::morphologyEx(in, m.clean, cv::MORPH_CLOSE, m.close_k); });
 }
 
 Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
@@ -188,8 +207,10 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         flooded_ = true;
         return;
     }
-    m.clean.copyTo(m.tmp); // findContours may change its input
-    cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    allocating([&] {
+        m.clean.copyTo(m.tmp); // findContours may change its input
+        cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    });
 
     std::vector<Rect> &b = m.blobs;
     b.clear();

@@ -1,12 +1,59 @@
 // The only file that includes FLANN.
 #include "nnindex.h"
 
+// Every standard header FLANN includes, first: the malloc macro below must
+// reach FLANN's own code only.
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <limits.h>
+#include <limits>
+#include <lz4.h>
+#include <lz4hc.h>
+#include <map>
+#include <new>
+#include <ostream>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <string>
+#include <typeinfo>
+#include <vector>
+
+namespace {
+
+// FLANN's PooledAllocator (the kd-tree's nodes) takes its blocks from
+// malloc and does not check it: on a failed allocation it returns NULL,
+// and `new (pool) Node()` constructs at address 0. Its mallocs come here
+// instead, where a failure throws std::bad_alloc like any other
+// allocation of the library (the feed then fails and changes nothing;
+// tests/check_oom.cc fails each of them).
+void *checked_malloc(size_t n)
+{
+    void *p = std::malloc(n);
+    if (!p)
+        throw std::bad_alloc();
+    return p;
+}
+
+} // namespace
+
 // Only what the single kd-tree needs. Its virtual saveIndex() still pulls in
 // FLANN's serialisation, so the library links lz4 (lib/meson.build).
+#define malloc(n) checked_malloc(n)
 #include <flann/algorithms/dist.h>
 #include <flann/algorithms/kdtree_single_index.h>
 #include <flann/util/matrix.h>
 #include <flann/util/result_set.h>
+#undef malloc
 
 namespace ctrack {
 

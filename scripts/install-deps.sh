@@ -4,6 +4,9 @@
 # Debian's python3 imports.
 #   install-deps.sh          install what is missing (uses sudo when not root)
 #   install-deps.sh --check  exit 1 if something is missing, installing nothing
+#   install-deps.sh --fuzz [--check]
+#                            what make fuzz adds: clang, its libFuzzer and
+#                            sanitizer runtimes, llvm-profdata and llvm-cov
 #   install-deps.sh --arm64 [--check]
 #                            what make cross-arm64 adds: the aarch64 cross
 #                            compilers, qemu-user, and through multiarch the
@@ -14,7 +17,12 @@ set -eu
 packages="gcc g++ make pkg-config meson ninja-build check python3 python3-venv python3-numpy ffmpeg
 libopencv-core-dev libopencv-imgproc-dev libopencv-video-dev libflann-dev liblz4-dev"
 arm64=""
-if [ "${1:-}" = "--arm64" ]; then
+if [ "${1:-}" = "--fuzz" ]; then
+    shift
+    # libFuzzer's runtime is in the versioned package of Debian's clang.
+    v=$(apt-cache depends clang 2>/dev/null | sed -n 's/.*Depends: clang-\([0-9][0-9]*\)$/\1/p' | head -n 1)
+    packages="$packages clang libclang-rt-${v:-14}-dev llvm"
+elif [ "${1:-}" = "--arm64" ]; then
     shift
     arm64=yes
     packages="$packages gcc-aarch64-linux-gnu g++-aarch64-linux-gnu qemu-user

@@ -1,10 +1,16 @@
 // Allocation failures inside the library become CT_ERROR_OUT_OF_MEMORY, and a
 // failed feed leaves the tracker as it was. operator new is replaced here to
-// fail on demand; the library is linked statically so it uses this one.
+// fail on demand (the library is linked statically so it uses this one),
+// and so are malloc and its family: the executable's malloc interposes on
+// every shared library's, so OpenCV's allocations (cv::fastMalloc) and the
+// C library's fail on demand too. (Under AddressSanitizer or
+// ThreadSanitizer, whose runtimes own malloc, only operator new fails.)
 #include <check.h>
 
 #include "common.h"
 
+#include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,30 +21,97 @@
 #include "detfile.h"
 #include "video.h"
 
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define INTERPOSE_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define INTERPOSE_MALLOC 0
+#endif
+#endif
+#ifndef INTERPOSE_MALLOC
+#define INTERPOSE_MALLOC 1
+#endif
+
 static const char *data_dir;
 static const char *tud_video; // TUD-Campus as Y4M (made by the build)
-static long fail_countdown = -1; // the allocation that fails; -1: none
-static long allocations = 0;
+// The allocation that fails (0: the next one); -1: none. Counted down by
+// every thread's allocations.
+static std::atomic<long> fail_countdown{-1};
+// While set, every allocation fails, in every thread.
+static std::atomic<bool> fail_all{false};
+static std::atomic<long> allocations{0};
+// Failed allocations that came through malloc and not operator new: the
+// C library's, OpenCV's.
+static std::atomic<long> failed_mallocs{0};
+
+// Whether this allocation may go through.
+static bool allowed()
+{
+    allocations.fetch_add(1, std::memory_order_relaxed);
+    if (fail_all.load(std::memory_order_relaxed))
+        return false;
+    long c = fail_countdown.load();
+    while (c >= 0)
+        if (fail_countdown.compare_exchange_weak(c, c - 1))
+            return c != 0;
+    return true;
+}
+
+#if INTERPOSE_MALLOC
+extern "C" {
+void *__libc_malloc(size_t);
+void *__libc_calloc(size_t, size_t);
+void *__libc_realloc(void *, size_t);
+void *__libc_memalign(size_t, size_t);
+void __libc_free(void *);
+
+static void *refuse()
+{
+    failed_mallocs++;
+    errno = ENOMEM;
+    return nullptr;
+}
+void *malloc(size_t n) { return allowed() ? __libc_malloc(n) : refuse(); }
+void *calloc(size_t n, size_t k) { return allowed() ? __libc_calloc(n, k) : refuse(); }
+void *realloc(void *p, size_t n)
+{
+    if (!p)
+        return malloc(n);
+    return allowed() ? __libc_realloc(p, n) : refuse();
+}
+void free(void *p) { __libc_free(p); }
+void *memalign(size_t a, size_t n) { return allowed() ? __libc_memalign(a, n) : refuse(); }
+void *aligned_alloc(size_t a, size_t n) { return memalign(a, n); }
+int posix_memalign(void **out, size_t a, size_t n)
+{
+    void *p = memalign(a, n);
+    if (!p)
+        return ENOMEM;
+    *out = p;
+    return 0;
+}
+}
+static void *raw_malloc(size_t n) { return __libc_malloc(n); }
+static void raw_free(void *p) { __libc_free(p); }
+#else
+static void *raw_malloc(size_t n) { return std::malloc(n); }
+static void raw_free(void *p) { std::free(p); }
+#endif
 
 void *operator new(std::size_t n)
 {
-    allocations++;
-    if (fail_countdown == 0) {
-        fail_countdown = -1;
+    if (!allowed())
         throw std::bad_alloc();
-    }
-    if (fail_countdown > 0)
-        fail_countdown--;
-    void *p = std::malloc(n ? n : 1);
+    void *p = raw_malloc(n ? n : 1);
     if (!p)
         throw std::bad_alloc();
     return p;
 }
 void *operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void *p) noexcept { std::free(p); }
-void operator delete[](void *p) noexcept { std::free(p); }
-void operator delete(void *p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+void operator delete(void *p) noexcept { raw_free(p); }
+void operator delete[](void *p) noexcept { raw_free(p); }
+void operator delete(void *p, std::size_t) noexcept { raw_free(p); }
+void operator delete[](void *p, std::size_t) noexcept { raw_free(p); }
 
 static std::vector<ct_track> tracks_of(ct_tracker *t)
 {
@@ -235,6 +308,144 @@ START_TEST(bgr24_out_of_memory_changes_nothing)
 }
 END_TEST
 
+// The first kEveryAllocationSteps steps of TUD-Campus, in each mode: each
+// step is fed once with every allocation failing (in every thread), then
+// once for each allocation it makes with that one failing (the first, the
+// second, ...: OpenCV's, FLANN's, the C library's and ctrack's alike), each
+// refused with CT_ERROR_OUT_OF_MEMORY and changing nothing, and then goes
+// through and must give what a tracker that never saw a failed call gives;
+// the rest of the sequence follows, compared step by step. 40 steps (1.6 s
+// of video: the background model's start, the first tracks, their colour
+// models and templates) keep the three modes within a minute here (about
+// 20,000 refused feeds).
+static const int kEveryAllocationSteps = 40;
+
+struct Snapshot {
+    std::vector<ct_track> tracks;
+    std::vector<ct_candidate> candidates;
+    uint64_t steps;
+};
+
+static Snapshot snapshot(ct_tracker *t)
+{
+    ct_stats st;
+    st.size = sizeof st;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
+    return {tracks_of(t), candidates_of(t), st.steps};
+}
+
+static void assert_same(const Snapshot &a, const Snapshot &b, int step, long attempt)
+{
+    ck_assert_msg(a.tracks.size() == b.tracks.size() && a.candidates.size() == b.candidates.size() &&
+                      a.steps == b.steps,
+                  "step %d, allocation %ld: %zu/%zu tracks, %zu/%zu candidates, %llu/%llu steps",
+                  step, attempt, a.tracks.size(), b.tracks.size(), a.candidates.size(),
+                  b.candidates.size(), (unsigned long long)a.steps, (unsigned long long)b.steps);
+    assert_equal(a.tracks, b.tracks);
+    assert_equal(a.candidates, b.candidates);
+}
+
+enum Mode { DETECTIONS, DETECTIONS_AND_PIXELS, PIXELS };
+
+static void every_allocation_fails(Mode mode)
+{
+    det_file df;
+    load_detections("TUD-Campus", &df);
+    char err[512];
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_input *in = nullptr;
+    video_info info;
+    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    cfg.source = mode == PIXELS ? CT_SOURCE_PIXELS : CT_SOURCE_DETECTIONS;
+    ct_tracker *ref = nullptr, *t = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
+    long refused = 0, most = 0;
+    const long mallocs_before = failed_mallocs;
+    int k = 1;
+    for (;; k++) {
+        ct_frame f;
+        const int r = video_read(in, &f, err, sizeof err);
+        ck_assert_msg(r >= 0, "%s", err);
+        if (r == 0)
+            break;
+        f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
+        if (mode == DETECTIONS) {
+            const int w = f.width, h = f.height;
+            ct_frame_default(&f, sizeof f);
+            f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
+            f.width = w;
+            f.height = h;
+        }
+        size_t n = 0;
+        const ct_detection *d = detfile_frame(&df, k, &n);
+        if (mode == PIXELS)
+            d = nullptr, n = 0;
+        ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
+        if (k <= kEveryAllocationSteps) {
+            const Snapshot before = snapshot(t);
+            for (long attempt = -1;; attempt++) {
+                // -1: all of them; then the first, the second, ...
+                if (attempt < 0)
+                    fail_all = true;
+                else
+                    fail_countdown = attempt;
+                const int st = ct_tracker_feed(t, &f, d, n);
+                fail_all = false;
+                fail_countdown = -1;
+                if (st == CT_OK) { // a step that allocates nothing goes through at once
+                    most = attempt > most ? attempt : most;
+                    break;
+                }
+                ck_assert_msg(st == CT_ERROR_OUT_OF_MEMORY, "step %d, allocation %ld: %s", k,
+                              attempt, ct_tracker_last_error(t));
+                ck_assert_str_eq(ct_tracker_last_error(t), "out of memory");
+                assert_same(snapshot(t), before, k, attempt);
+                refused++;
+            }
+        } else {
+            ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
+        }
+        assert_same(snapshot(t), snapshot(ref), k, 0);
+    }
+    ck_assert_int_gt(k, kEveryAllocationSteps);
+    ck_assert_int_gt(refused, kEveryAllocationSteps / 2); // some steps allocate nothing
+    std::printf("every allocation fails, %s: %ld refused feeds in %d steps (at most %ld "
+                "allocations a step), %ld of the failed allocations through malloc\n",
+                mode == PIXELS ? "pixels only"
+                : mode == DETECTIONS ? "detections only" : "detections + pixels",
+                refused, kEveryAllocationSteps, most, failed_mallocs - mallocs_before);
+#if INTERPOSE_MALLOC
+    // With pixels, OpenCV's own allocations were among those that failed.
+    if (mode != DETECTIONS)
+        ck_assert_int_gt(failed_mallocs - mallocs_before, 0);
+#endif
+    ct_tracker_destroy(ref);
+    ct_tracker_destroy(t);
+    video_close(in);
+    detfile_free(&df);
+}
+
+START_TEST(every_allocation_fails_detections_only)
+{
+    every_allocation_fails(DETECTIONS);
+}
+END_TEST
+
+START_TEST(every_allocation_fails_detections_and_pixels)
+{
+    every_allocation_fails(DETECTIONS_AND_PIXELS);
+}
+END_TEST
+
+START_TEST(every_allocation_fails_pixels_only)
+{
+    every_allocation_fails(PIXELS);
+}
+END_TEST
+
 // In steady state, a feed makes no heap allocation at all.
 START_TEST(steady_state_does_not_allocate)
 {
@@ -256,11 +467,14 @@ START_TEST(steady_state_does_not_allocate)
             f.timestamp_us = (int64_t)((pass * df.max_frame + k - 1) * 1e6 / 7);
             size_t n, count;
             const ct_detection *d = detfile_frame(&df, k, &n);
-            long a0 = allocations;
-            ck_assert_int_eq(ct_tracker_feed(t, &f, d, n), CT_OK);
-            ck_assert_int_eq(ct_tracker_get_tracks(t, out, 512, sizeof out[0], &count), CT_OK);
+            // Counted around the calls alone: Check's assertions allocate.
+            const long a0 = allocations;
+            const int st = ct_tracker_feed(t, &f, d, n);
+            const int sg = ct_tracker_get_tracks(t, out, 512, sizeof out[0], &count);
             if (pass == 1)
                 in_last_half += allocations - a0;
+            ck_assert_int_eq(st, CT_OK);
+            ck_assert_int_eq(sg, CT_OK);
         }
     }
     ck_assert_int_eq(in_last_half, 0);
@@ -286,6 +500,9 @@ int main(int argc, char **argv)
     tcase_add_test(tc, bgr24_out_of_memory_changes_nothing);
     tcase_add_test(tc, detections_and_pixels_out_of_memory_changes_nothing);
     tcase_add_test(tc, steady_state_does_not_allocate);
+    tcase_add_test(tc, every_allocation_fails_detections_only);
+    tcase_add_test(tc, every_allocation_fails_detections_and_pixels);
+    tcase_add_test(tc, every_allocation_fails_pixels_only);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }
