@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The paper's "feature recognition accuracy", as ALGORITHM.md ("Measures")
-defines it, and the thresholds of the contour template's regions.
+"""The paper's "feature recognition accuracy", under the label rule of
+issue 18 (which replaces ALGORITHM.md's "Measures"), and the thresholds of
+the contour template's regions.
 
     recognition.py BUILD_DIR [--write] [--report]
 
@@ -13,13 +14,17 @@ defines it, and the thresholds of the contour template's regions.
    it overlaps no one (IoU < 0.1 with every box, and no box holds a tenth of
    its area: a small blob between a person's legs has a tiny IoU with their
    box but is on them); the others (parts of people, groups) are left out
-   and counted apart.
+   and counted apart. The people are the ground-truth rows the scoring
+   keeps (7th column not 0). A negative is uncertain, left out and counted
+   apart too, when it touches the image's edge (within 2 pixels), when a
+   public detection of its frame covers it (IoU >= 0.4), or when it lies on
+   a row the scoring ignores (7th column 0).
 3. Reports the balanced accuracy of the library's region vote, as built (a
    blob is a pedestrian when more than half the voting regions say yes), on
    frames 1-400, 401-795 and on TUD-Campus, beside a size-and-aspect-ratio
    filter whose bounds are chosen on frames 1-400, and the candidates'
-   recall and precision; also with the blobs at the image's edge left out
-   (people coming in or going out, whom the ground truth often lacks).
+   recall and precision; where the negatives the vote accepts lie; and the
+   same figures under ALGORITHM.md's rule (every negative counted).
 4. Chooses each region's threshold again on PETS09-S2L1 frames 1-400: the
    one that best separates positives from negatives by that region's own
    vote (balanced accuracy); then the largest part of its convex hull a
@@ -127,19 +132,30 @@ def write_test_blobs(build, sets):
         print("test blobs: %s %d positives, %d negatives" % (seq, p, n))
 
 
+UNCERTAIN = -2  # a negative the rule leaves out and counts apart
+
+
 def label(cands, seq):
-    """+1 positive, 0 negative, -1 left out, for every candidate row. Every
-    ground-truth box is a person, also those the MOTChallenge scoring ignores
-    (flag 0: PETS09-S2L1's people far off in the top right corner)."""
+    """The label of every candidate row (issue 18's rule, which replaces
+    ALGORITHM.md's): +1 positive, 0 negative, -1 left out (a part of a
+    person, a group), UNCERTAIN a negative left out of the accuracy and
+    counted apart. Returns the labels and, for the uncertain ones, why:
+    (at the image's edge, under a public detection, on an ignored person),
+    three boolean arrays (a blob may have several reasons)."""
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
     labels = np.full(len(cands), -1)
+    ignored = np.zeros(len(cands), bool)
     for i, row in enumerate(cands):
-        boxes = gt[gt[:, 0] == row[0]][:, 2:6]
+        rows = gt[gt[:, 0] == row[0]]
+        people, skip = rows[rows[:, 6] != 0][:, 2:6], rows[rows[:, 6] == 0][:, 2:6]
         box = row[1:5]
-        if len(boxes) == 0:
+        if len(skip):  # on a person MOTChallenge ignores (flag 0)
+            o, inter = iou(box, skip)
+            ignored[i] = o.max() >= 0.1 or (inter / (box[2] * box[3])).max() >= 0.1
+        if len(people) == 0:
             labels[i] = 0
             continue
-        o, inter = iou(box, boxes)
+        o, inter = iou(box, people)
         held = inter / (box[2] * box[3])  # the part of the blob each box holds
         if o.max() >= 0.5:
             labels[i] = 1
@@ -147,9 +163,12 @@ def label(cands, seq):
             labels[i] = 0
         else:
             inside = held >= 0.8
-            tall = box[3] >= 0.4 * boxes[:, 3]
+            tall = box[3] >= 0.4 * people[:, 3]
             labels[i] = 1 if np.sum(inside & tall) == 1 else -1
-    return labels
+    neg = labels == 0
+    why = (neg & at_border(cands, seq), neg & under_detection(cands, seq), neg & ignored)
+    labels[why[0] | why[1] | why[2]] = UNCERTAIN
+    return labels, why
 
 
 def balanced(pred, lab):
@@ -239,7 +258,7 @@ def picture_of_false_positives(cands, lab, accepted, seq, path, first=401, n=18)
     """A contact sheet of the held-out blobs on no one that the vote accepts:
     the frame around each, the blob in red, the ground-truth boxes in green."""
     import cv2  # the eval venv's; only --report needs it
-    from y4m import open_y4m
+    from cteval.y4m import open_y4m
     w, h, _, frames = open_y4m(video(seq))
     gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",")
     idx = np.flatnonzero(accepted & (lab == 0) & (cands[:, 0] >= first))
@@ -364,6 +383,20 @@ def under_detection(c, seq, min_iou=0.4):
     return out
 
 
+def accepted_negatives(c, l, v):
+    """Where the negatives the vote accepts lie: their count, the frames
+    they span, the median centre, and how many lie within 60 pixels of it
+    (one place: usually one person the ground truth lacks)."""
+    idx = np.flatnonzero(v & (l == 0))
+    if len(idx) == 0:
+        return 0, 0, 0, (0, 0), 0
+    cx = c[idx, 1] + c[idx, 3] / 2
+    cy = c[idx, 2] + c[idx, 4] / 2
+    mx, my = np.median(cx), np.median(cy)
+    near = np.hypot(cx - mx, cy - my) <= 60
+    return len(idx), int(c[idx, 0].min()), int(c[idx, 0].max()), (mx, my), int(near.sum()), near, idx
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
@@ -371,10 +404,12 @@ def main():
                     help="rewrite lib/classifier_params.inc and tests/data/blobs/labelled.bin")
     ap.add_argument("--report", action="store_true", help="rewrite docs/notes/recognition.md")
     a = ap.parse_args()
-    sets = {}
+    sets, reasons = {}, {}
     for seq in ("PETS09-S2L1", "TUD-Campus"):
         c = candidates(a.build, seq)
-        sets[seq] = (c, label(c, seq))
+        lab, why = label(c, seq)
+        sets[seq] = (c, lab)
+        reasons[seq] = why
     pc, pl = sets["PETS09-S2L1"]
     train = pc[:, 0] <= 400
     th = choose_thresholds(pc[train][:, 8:17], pl[train])
@@ -382,67 +417,60 @@ def main():
     shipped, shipped_fill, max_top = shipped_params()
     size = choose_size_filter(pc[train][:, 1:5], pl[train])
     rows = []
-    parts = [("PETS09-S2L1 frames 1-400 (thresholds chosen on these)", pc[train], pl[train],
-              "PETS09-S2L1", (1, 400)),
-             ("PETS09-S2L1 frames 401-795", pc[~train], pl[~train], "PETS09-S2L1",
+    parts = [("PETS09-S2L1 frames 1-400 (thresholds chosen on these)", train, "PETS09-S2L1",
+              (1, 400)),
+             ("PETS09-S2L1 frames 401-795", ~train, "PETS09-S2L1",
               (401, seqinfo("PETS09-S2L1")["frames"])),
-             ("TUD-Campus", sets["TUD-Campus"][0], sets["TUD-Campus"][1], "TUD-Campus",
+             ("TUD-Campus", np.ones(len(sets["TUD-Campus"][0]), bool), "TUD-Campus",
               (1, seqinfo("TUD-Campus")["frames"]))]
     alone = []  # each part's vote of the regions alone, without the shape tests
-    label_check = []
-    for name, c, l, seq, frames in parts:
+    uncertain, older, where = [], [], []
+    for name, part, seq, frames in parts:
+        c, l = sets[seq][0][part], sets[seq][1][part]
+        why = [w[part] for w in reasons[seq]]
         keep = l >= 0
-        inner = keep & ~at_border(c, seq)
         v = c[:, 5] > 0.5  # the library's own vote: more than half the voters say yes
         s = size_filter(c[:, 1:5], *size)
         alone.append(votes(c[:, 8:17], shipped))
         no_top = alone[-1] & (c[:, 17] <= shipped_fill)  # the vote without the top's test
-        rows.append((name, (l == 1).sum(), (l == 0).sum(), (l == -1).sum(),
-                     balanced(v[keep], l[keep]), balanced(s[keep], l[keep]),
-                     recall_precision(c, v, seq, *frames), balanced(v[inner], l[inner]),
+        rows.append((name, (l == 1).sum(), (l == 0).sum(), (l == UNCERTAIN).sum(),
+                     (l == -1).sum(), balanced(v[keep], l[keep]), balanced(s[keep], l[keep]),
+                     recall_precision(c, v, seq, *frames),
                      balanced((votes(c[:, 8:17], th) & (c[:, 17] <= max_fill) &
                                (c[:, 18] <= max_top))[keep], l[keep]),
                      balanced(alone[-1][keep], l[keep]), balanced(no_top[keep], l[keep])))
-        # For the label rule: the negatives a public detection covers, left out.
-        # Then also those at the image's edge, where the ground truth lacks
-        # most people partly outside.
-        covered = under_detection(c, seq)
-        check = [name]
-        for doubt in (covered, covered | at_border(c, seq)):
-            sure = keep & ~((l == 0) & doubt)
-            check += [((l == 0) & ~sure & keep).sum(), balanced(v[sure], l[sure]),
-                      balanced(s[sure], l[sure])]
-        label_check.append(check)
-    # The same, with the vote's thresholds, its fill bound and the size
-    # filter's bounds chosen again on frames 1-400 under that label rule:
-    # what a change of the rule alone would give.
-    doubt_free = {}
-    for _, c, l, seq, _ in parts:
-        doubtful = (l == 0) & (under_detection(c, seq) | at_border(c, seq))
-        doubt_free[id(c)] = np.where(doubtful, -1, l)
-    c0, l0 = parts[0][1], doubt_free[id(parts[0][1])]
-    th2 = choose_thresholds(c0[:, 8:17], l0)
-    fill2 = choose_max_fill(c0[:, 8:17], c0[:, 17], th2, l0)
-    size2 = choose_size_filter(c0[:, 1:5], l0)
-    rechosen = []
-    for name, c, _, _, _ in parts:
-        l2 = doubt_free[id(c)]
-        k = l2 >= 0
-        v2 = votes(c[:, 8:17], th2) & (c[:, 17] <= fill2) & (c[:, 18] <= max_top)
-        rechosen.append((name, balanced(v2[k], l2[k]),
-                         balanced(size_filter(c[:, 1:5], *size2)[k], l2[k])))
+        uncertain.append((name, *(int(w.sum()) for w in why)))
+        # ALGORITHM.md's rule: every negative counts.
+        l_old = np.where(l == UNCERTAIN, 0, l)
+        k_old = l_old >= 0
+        older.append((name, balanced(v[k_old], l_old[k_old]), balanced(s[k_old], l_old[k_old])))
+        acc = accepted_negatives(c, l, v)
+        if acc[0]:
+            # The vote's balanced accuracy without the negatives at that one place.
+            l_wo = l.copy()
+            l_wo[acc[6][acc[5]]] = UNCERTAIN
+            k_wo = l_wo >= 0
+            where.append((name, acc[:5], balanced(v[k_wo], l_wo[k_wo])))
+        else:
+            where.append((name, acc, None))
     print("thresholds in use:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)),
           "fill %.3f" % shipped_fill)
     print("thresholds chosen now:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, th)),
           "fill %.3f" % max_fill)
     print("size filter: aspect %.1f-%.2f, height >= %d" % size)
-    for r in rows:
-        print("%-38s pos %5d neg %5d out %5d  vote %.1f%% (TPR %.1f TNR %.1f)  size %.1f%%  "
-              "recall %.1f precision %.1f  border left out %.1f%%  re-chosen %.1f%%  "
-              "regions alone %.1f%%  no top test %.1f%%"
-              % (r[0][:38], r[1], r[2], r[3], 100 * r[4][0], 100 * r[4][1], 100 * r[4][2],
-                 100 * r[5][0], r[6][0], r[6][1], 100 * r[7][0], 100 * r[8][0], 100 * r[9][0],
-                 100 * r[10][0]))
+    for r, u in zip(rows, uncertain):
+        print("%-38s pos %5d neg %5d uncertain %4d (edge %d, detection %d, ignored %d) out %5d  "
+              "vote %.1f%% (TPR %.1f TNR %.1f)  size %.1f%%  recall %.1f precision %.1f  "
+              "re-chosen %.1f%%  regions alone %.1f%%  no top test %.1f%%"
+              % (r[0][:38], r[1], r[2], r[3], u[1], u[2], u[3], r[4], 100 * r[5][0],
+                 100 * r[5][1], 100 * r[5][2], 100 * r[6][0], r[7][0], r[7][1], 100 * r[8][0],
+                 100 * r[9][0], 100 * r[10][0]))
+    for name, acc, b in where:
+        if acc[0]:
+            print("%-38s the vote accepts %d negatives, frames %d-%d, %d of them within 60 px "
+                  "of (%.0f, %.0f); without those: %.1f%%"
+                  % (name[:38], acc[0], acc[1], acc[2], acc[4], acc[3][0], acc[3][1],
+                     100 * b[0]))
     if a.write:
         write_test_blobs(a.build, sets)
         write_params(th, max_fill, max_top)
@@ -462,25 +490,35 @@ def main():
         os.path.join(TOP, "docs", "img", "recognition-top.png"))
     with open(os.path.join(TOP, "docs", "notes", "recognition.md"), "w") as f:
         f.write(RECOGNITION_HEAD % datetime.date.today().isoformat())
-        f.write("| set | positives | negatives | left out | region vote: balanced accuracy "
-                "(TPR / TNR) | size and aspect filter | region vote, blobs at the image's "
-                "edge left out | regions alone, no shape test | region vote without the "
-                "top's test | candidates kept: recall / precision |\n")
+        f.write("| set | positives | negatives | uncertain (edge / detection / ignored) | left "
+                "out | region vote: balanced accuracy (TPR / TNR) | size and aspect filter | "
+                "regions alone, no shape test | region vote without the top's test | "
+                "candidates kept: recall / precision |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|\n")
-        for r in rows:
-            f.write("| %s | %d | %d | %d | %.1f%% (%.1f / %.1f) | %.1f%% (%.1f / %.1f) | %.1f%% "
+        for r, u in zip(rows, uncertain):
+            f.write("| %s | %d | %d | %d (%d / %d / %d) | %d | %.1f%% (%.1f / %.1f) | %.1f%% "
                     "(%.1f / %.1f) | %.1f%% | %.1f%% (%.1f / %.1f) | %.1f / %.1f |\n"
-                    % (r[0], r[1], r[2], r[3], 100 * r[4][0], 100 * r[4][1], 100 * r[4][2],
-                       100 * r[5][0], 100 * r[5][1], 100 * r[5][2], 100 * r[7][0],
-                       100 * r[7][1], 100 * r[7][2], 100 * r[9][0], 100 * r[10][0],
-                       100 * r[10][1], 100 * r[10][2], r[6][0], r[6][1]))
+                    % (r[0], r[1], r[2], r[3], u[1], u[2], u[3], r[4], 100 * r[5][0],
+                       100 * r[5][1], 100 * r[5][2], 100 * r[6][0], 100 * r[6][1],
+                       100 * r[6][2], 100 * r[9][0], 100 * r[10][0], 100 * r[10][1],
+                       100 * r[10][2], r[7][0], r[7][1]))
+        f.write(RECOGNITION_WHERE)
+        for name, acc, b in where:
+            if acc[0]:
+                f.write("- %s: %d, in frames %d to %d; %d of them within 60 pixels of (%.0f, "
+                        "%.0f). Without those, the vote's balanced accuracy is %.1f%% "
+                        "(%.1f / %.1f).\n" % (name, acc[0], acc[1], acc[2], acc[4], acc[3][0],
+                                               acc[3][1], 100 * b[0], 100 * b[1], 100 * b[2]))
+            else:
+                f.write("- %s: none.\n" % name)
         f.write("\nThe thresholds in use (box heights): %s; a blob that fills more than %.3f "
                 "of its convex hull is no pedestrian, nor one whose top is wider than %.2f of "
                 "its body (a design constant, not chosen here). They were chosen on PETS09-S2L1 "
                 "frames 1-400 by the run of `--write` before this one; chosen again on this "
-                "run's blobs they would be %s, and %.3f. The size and aspect filter's bounds, "
-                "chosen on frames 1-400 of this run: height over width %.1f to %.2f, height "
-                "at least %d pixels.\n"
+                "run's blobs under this rule they would be %s, and %.3f (the column "
+                "\"re-chosen\" of `recognition.py`'s output). The size and aspect filter's "
+                "bounds, chosen on frames 1-400 of this run: height over width %.1f to %.2f, "
+                "height at least %d pixels.\n"
                 % (", ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)), shipped_fill,
                    max_top, ", ".join("%.3f" % t for t in th), max_fill, *size))
         f.write("\nThe bound on the fill, against the vote's balanced accuracy with the "
@@ -489,7 +527,8 @@ def main():
         f.write("|---|" + "---|" * len(rows) + "\n")
         for bound in FILL_BOUNDS:
             cells = []
-            for (_, c, l, _, _), regions in zip(parts, alone):
+            for (_, part, seq, _), regions in zip(parts, alone):
+                c, l = sets[seq][0][part], sets[seq][1][part]
                 k = l >= 0
                 pred = regions & (c[:, 17] <= bound) & (c[:, 18] <= max_top)
                 cells.append("%.1f%%" % (100 * balanced(pred[k], l[k])[0]))
@@ -498,21 +537,10 @@ def main():
             f.write(RECOGNITION_FILL_PICTURE)
         if top_picture:
             f.write(RECOGNITION_TOP_PICTURE)
-        f.write(RECOGNITION_LABELS)
-        f.write("| set | negatives under a detection, left out | region vote (TPR / TNR) "
-                "| size and aspect filter (TPR / TNR) | negatives under a detection or at "
-                "the image's edge, left out | region vote (TPR / TNR) | size and aspect "
-                "filter (TPR / TNR) |\n|---|---|---|---|---|---|---|\n")
-        for check in label_check:
-            cells = [check[0]]
-            for n, vb, sb in (check[1:4], check[4:7]):
-                cells += ["%d" % n] + ["%.1f%% (%.1f / %.1f)" % (100 * b[0], 100 * b[1],
-                                                                 100 * b[2]) for b in (vb, sb)]
-            f.write("| %s |\n" % " | ".join(cells))
-        f.write(RECOGNITION_RECHOSEN % (", ".join("%.3f" % t for t in th2), fill2, *size2))
+        f.write(RECOGNITION_OLDER)
         f.write("| set | region vote (TPR / TNR) | size and aspect filter (TPR / TNR) |\n"
                 "|---|---|---|\n")
-        for name, vb, sb in rechosen:
+        for name, vb, sb in older:
             f.write("| %s | %.1f%% (%.1f / %.1f) | %.1f%% (%.1f / %.1f) |\n"
                     % (name, 100 * vb[0], 100 * vb[1], 100 * vb[2], 100 * sb[0],
                        100 * sb[1], 100 * sb[2]))
@@ -527,53 +555,45 @@ Made by `eval/recognition.py build --report` on %s, with the thresholds
 the library is built with (`--write` chooses them again and rewrites
 `lib/classifier_params.inc`; run `make` after it). The blobs are those
 the background model finds when ct-track tracks from the pixels alone; each is
-labelled against the ground truth by rule (ALGORITHM.md, "Measures"):
-positive when it matches one person (IoU >= 0.5, or it lies inside one
-person's box and covers at least 40%% of their height), negative when it
-overlaps no one (IoU < 0.1 with every box, and no box holds a tenth of its
-area), left out otherwise (parts of people, groups). A small blob between a
-person's legs or on their arm has an IoU below 0.1 with their box, yet it
-overlaps them: until 0.6.0 such blobs were counted as negatives, which on
-TUD-Campus was half of them. Every ground-truth box counts, also those the MOTChallenge
-scoring ignores (flag 0: PETS09-S2L1's people far off in the top right
-corner, whose blobs were once counted as negatives). Balanced accuracy is the
-mean of the true positive and true negative rates. A blob is a pedestrian
-when more than half of the regions that vote say yes, it fills no more of
-its convex hull than a walking person does, and its top is narrower than its
-body (0.7.0: a person has a head; docs/notes/pixels.md); the column "regions
-alone" leaves both shape tests out, the column "without the top's test"
-the last.
+labelled against the ground truth by rule (issue 18's, which replaces
+ALGORITHM.md's "Measures"):
 
-"""
-RECOGNITION_LABELS = """
-For the label rule (not the measure ALGORITHM.md defines): the same figures
-with the negatives that a MOTChallenge public detection covers (IoU >= 0.4
-with a box of `det/det.txt` in the same frame) left out. Those blobs are on
-no ground-truth box, but a detector saw a person there; looking at them,
-most are people the ground truth lacks (the contact sheet below shows the
-vote's false positives). The last three columns also leave out the
-negatives at the image's edge (within 2 pixels): the ground truth lacks
-most people while they are partly outside, and the detector often misses
-them too. The positives are all kept in both. With the edge's negatives
-left in, the size and aspect filter does as well as the vote or better on
-PETS09-S2L1: what is left of its negatives there is mostly too small or too
-flat for a person. With them left out, the vote is ahead on every set; the
-negatives it still accepts on PETS09-S2L1 frames 401-795 are a person by
-the parked van at the top right, whom the ground truth lacks (the last
-pictures of the contact sheet below).
+- **positive** when it matches one person (IoU >= 0.5, or it lies inside
+  one person's box and covers at least 40%% of their height);
+- **negative** when it overlaps no one (IoU < 0.1 with every box, and no box
+  holds a tenth of its area: a small blob between a person's legs has a
+  tiny IoU with their box, yet it is on them);
+- **left out** otherwise (parts of people, groups), counted apart;
+- a negative is **uncertain**, left out of the accuracy and counted apart,
+  when it touches the image's edge (within 2 pixels: people coming in or
+  going out, whom the ground truth lacks while they are partly outside),
+  when a public detection of the same frame covers it (IoU >= 0.4 with a
+  box of `det/det.txt`: a detector saw a person there), or when it lies on
+  a ground-truth row whose 7th column is 0 (people the MOTChallenge scoring
+  ignores: PETS09-S2L1's far off in the top right corner).
+
+The people are the rows the scoring keeps. Balanced accuracy is the mean of
+the true positive and true negative rates. The thresholds were chosen on
+PETS09-S2L1 frames 1-400; frames 401-795 and TUD-Campus are held out. A
+blob is a pedestrian when more than half of the regions that vote say yes,
+it fills no more of its convex hull than a walking person does, and its top
+is narrower than its body (0.7.0: a person has a head;
+docs/notes/pixels.md); the column "regions alone" leaves both shape tests
+out, the column "without the top's test" the last.
 
 """
 
-RECOGNITION_RECHOSEN = """
-Under that rule (negatives under a detection or at the image's edge left
-out), with everything chosen again on PETS09-S2L1 frames 1-400 as
-`--write` does: the regions' thresholds (%s), the fill bound (%.3f) and
-the size filter's bounds (height over width %.1f to %.2f, height at least
-%d pixels). This is what a change of the label rule alone would give.
-With so few negatives left on frames 1-400, the thresholds loosen and the
-vote accepts much more elsewhere. The size filter holds: the negatives
-left are mostly small (people far off, specks), under its height bound,
-and the vote has no notion of size.
+RECOGNITION_WHERE = """
+Where the negatives the vote accepts lie (all the vote's false positives
+that count), per set. Many at one place over consecutive frames are one
+thing the vote keeps accepting, most often a person the ground truth lacks
+(no row, not even one the scoring ignores, and no public detection): the
+contact sheet at the end shows those of frames 401-795.
+
+"""
+
+RECOGNITION_OLDER = """
+With every negative counted (none left out as uncertain), for comparison:
 
 """
 
@@ -581,10 +601,6 @@ RECOGNITION_TAIL = """
 Recall and precision: of the ground-truth boxes the scoring considers, those
 a kept candidate matches (IoU >= 0.5); of the kept candidates, those that
 match a box.
-
-The blobs at the image's edge are mostly people coming in or going out,
-whom the ground truth often lacks while they are partly outside: as
-negatives they are most of the vote's false positives on PETS09-S2L1.
 
 `--write` keeps held-out blobs of its run (every negative of PETS09-S2L1
 frames 401-795 and of TUD-Campus, as many positives) in
