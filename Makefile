@@ -68,7 +68,8 @@ fuzz: deps
 
 # The library, ct-track, the examples and the C suites built for 64-bit ARM
 # (cross/aarch64-linux-gnu.txt), with the Debian packages that takes; the C
-# suites, the CLI tests and the soak run under qemu-aarch64, then ten
+# suites, the CLI tests and the soak run under qemu-aarch64 (four times the
+# timeouts: emulation is some ten times slower), then ten
 # replays must give the tracks of the native build byte for byte
 # (tests/cross_compare.sh). The Python suite is left out: ctypes in the
 # build machine's Python cannot load an arm64 library.
@@ -78,7 +79,8 @@ cross-arm64: all
 	@[ -f $(ARM64_BUILD)/build.ninja ] || meson setup $(ARM64_BUILD) \
 	    --cross-file cross/aarch64-linux-gnu.txt $(MESON_OPTS)
 	meson compile -C $(ARM64_BUILD)
-	meson test -C $(ARM64_BUILD) --suite lib --suite cli --suite soak --print-errorlogs
+	CK_TIMEOUT_MULTIPLIER=4 meson test -C $(ARM64_BUILD) --suite lib --suite cli --suite soak \
+	    --timeout-multiplier 4 --print-errorlogs
 	meson test -C $(ARM64_BUILD) header-c header-cxx symbols --print-errorlogs
 	tests/cross_compare.sh $(BUILD)/tools/ct-track $(ARM64_BUILD)/tools/ct-track tests/data/mot15
 

@@ -6,7 +6,14 @@
 #include <cstring>
 
 #include "clock.h"
+#include "cpu.h"
 #include "mask.h"
+
+#if defined(__GNUC__)
+// The 32-byte vectors of the AVX2 build live only inside its inlined loop:
+// no call passes one, whatever -Wpsabi fears.
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 namespace ctrack {
 
@@ -56,11 +63,16 @@ constexpr double kLumaNoise = 5.0, kChromaNoise = 4.0, kShadowNoise = 1.0;
 // extensions: several pixels at once, on any target). A mask is non-zero
 // where true (1 for int, all ones for a vector lane); `c ? a : b` selects
 // lane by lane. Every value fits in 16 bits: at most 16 * 255.
-template <typename T> inline T splat(int v) { return T{} + (int16_t)v; }
-template <typename T> inline T vmin(T a, T b) { return a < b ? a : b; }
-template <typename T> inline T vmax(T a, T b) { return a > b ? a : b; }
-template <typename T> inline T vabs(T a) { return a < splat<T>(0) ? -a : a; }
-template <typename T> inline T step_toward(T m, T target, int step)
+#if defined(__GNUC__)
+#define CT_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CT_ALWAYS_INLINE inline
+#endif
+template <typename T> CT_ALWAYS_INLINE T splat(int v) { return T{} + (int16_t)v; }
+template <typename T> CT_ALWAYS_INLINE T vmin(T a, T b) { return a < b ? a : b; }
+template <typename T> CT_ALWAYS_INLINE T vmax(T a, T b) { return a > b ? a : b; }
+template <typename T> CT_ALWAYS_INLINE T vabs(T a) { return a < splat<T>(0) ? -a : a; }
+template <typename T> CT_ALWAYS_INLINE T step_toward(T m, T target, int step)
 {
     return m + vmin(vmax(target - m, splat<T>(-step)), splat<T>(step));
 }
@@ -76,7 +88,7 @@ struct Rates {
 
 // Luma: M and V learn where `live` (the pixel is not frozen); returns the
 // foreground mask.
-template <typename T> inline T luma(T I, T &M, T &V, T live, const Rates &r)
+template <typename T> CT_ALWAYS_INLINE T luma(T I, T &M, T &V, T live, const Rates &r)
 {
     const T Mn = live ? step_toward(M, I, r.step) : M;
     const T D = vabs(I - Mn);
@@ -90,7 +102,7 @@ template <typename T> inline T luma(T I, T &M, T &V, T live, const Rates &r)
 // Luma and chroma: shadows (darker, same colour) are background, another
 // colour at the same brightness is foreground.
 template <typename T>
-inline T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const Rates &r)
+CT_ALWAYS_INLINE T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const Rates &r)
 {
     const T dc = vmax(vabs(U - BU), vabs(W - BV));
     BU = live ? step_toward(BU, U, r.step) : BU;
@@ -102,27 +114,150 @@ inline T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const Rates &r)
     return shadow ? splat<T>(0) : fg | (dc > splat<T>(r.chroma_fg));
 }
 
+// Vectors of N 16-bit lanes, read from and written to N bytes (GCC and
+// Clang vector extensions: SSE2 or NEON for 8 lanes, AVX2 for 16).
 #if defined(__GNUC__)
-// 8 pixels at a time: 128-bit vectors (SSE2, NEON).
-typedef int16_t Lanes __attribute__((vector_size(16)));
-typedef uint8_t Bytes __attribute__((vector_size(8)));
-constexpr int kLanes = 8;
-inline Lanes load(const uint8_t *p)
+template <int N> struct VecOf;
+template <> struct VecOf<8> {
+    typedef int16_t Lanes __attribute__((vector_size(16)));
+    typedef uint8_t Bytes __attribute__((vector_size(8)));
+};
+template <> struct VecOf<16> {
+    typedef int16_t Lanes __attribute__((vector_size(32)));
+    typedef uint8_t Bytes __attribute__((vector_size(16)));
+};
+template <int N> CT_ALWAYS_INLINE typename VecOf<N>::Lanes load(const uint8_t *p)
 {
-    Bytes b;
+    typename VecOf<N>::Bytes b;
     std::memcpy(&b, p, sizeof b);
-    return __builtin_convertvector(b, Lanes);
+    return __builtin_convertvector(b, typename VecOf<N>::Lanes);
 }
-inline void store(uint8_t *p, Lanes v)
+template <int N> CT_ALWAYS_INLINE void store(uint8_t *p, typename VecOf<N>::Lanes v)
 {
-    const Bytes b = __builtin_convertvector(v, Bytes);
+    const typename VecOf<N>::Bytes b = __builtin_convertvector(v, typename VecOf<N>::Bytes);
     std::memcpy(p, &b, sizeof b);
 }
-#else
-constexpr int kLanes = 0;
+#endif
+
+// One row of the model's update (BgRow): written once, built for the
+// portable path (N = 0: one pixel at a time, the reference) and for vectors
+// of N lanes, which dsp_init() picks by the CPU (tests/check_dsp.cc checks
+// every build against the portable one, bit for bit).
+template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
+{
+    const Rates r{a.step, a.warm, a.vmin, a.chroma_fg, a.shadow_chroma};
+    const uint8_t *__restrict iy = a.iy, *__restrict iu = a.iu, *__restrict iv = a.iv;
+    const uint8_t *__restrict om = a.om, *__restrict ov = a.ov;
+    const uint8_t *__restrict ou = a.ou, *__restrict ow = a.ow;
+    const uint8_t *__restrict frozen = a.frozen;
+    uint8_t *__restrict my = a.my, *__restrict vy = a.vy, *__restrict mu = a.mu;
+    uint8_t *__restrict mv = a.mv, *__restrict mask = a.mask;
+    const int w = a.w;
+    int x = 0;
+#if defined(__GNUC__)
+    if (N > 0) {
+        constexpr int L = N > 0 ? N : 8;
+        typedef typename VecOf<L>::Lanes T;
+        for (; x + L <= w; x += L) {
+            T M = load<L>(om + x), V = load<L>(ov + x);
+            const T I = load<L>(iy + x), live = load<L>(frozen + x) == splat<T>(0);
+            T fg;
+            if (a.color) {
+                T BU = load<L>(ou + x), BV = load<L>(ow + x);
+                fg = colour(I, load<L>(iu + x), load<L>(iv + x), M, V, BU, BV, live, r);
+                store<L>(mu + x, BU);
+                store<L>(mv + x, BV);
+            } else {
+                fg = luma(I, M, V, live, r);
+            }
+            store<L>(my + x, M);
+            store<L>(vy + x, V);
+            store<L>(mask + x, fg ? splat<T>(255) : splat<T>(0));
+        }
+    }
+#endif
+    for (; x < w; x++) {
+        int M = om[x], V = ov[x];
+        const int live = !frozen[x];
+        int fg;
+        if (a.color) {
+            int BU = ou[x], BV = ow[x];
+            fg = colour<int>(iy[x], iu[x], iv[x], M, V, BU, BV, live, r);
+            mu[x] = (uint8_t)BU;
+            mv[x] = (uint8_t)BV;
+        } else {
+            fg = luma<int>(iy[x], M, V, live, r);
+        }
+        my[x] = (uint8_t)M;
+        vy[x] = (uint8_t)V;
+        mask[x] = fg ? 255 : 0;
+    }
+}
+
+// The frame's samples at the working pixels: every kScale-th luma through
+// the exposure table (or as they are, lut null), and the chroma samples
+// when the plane interleaves them (NV12; I420's are read in place).
+CT_ALWAYS_INLINE void gather_row(const BgGather &g)
+{
+    const uint8_t *__restrict src = g.src_y;
+    uint8_t *__restrict iy = g.iy;
+    const int w = g.w;
+    if (g.lut) {
+        const uint8_t *__restrict lut = g.lut;
+        for (int x = 0; x < w; x++)
+            iy[x] = lut[src[x * Background::kScale]];
+    } else {
+        for (int x = 0; x < w; x++)
+            iy[x] = src[x * Background::kScale];
+    }
+    if (g.su && g.c_step == 2) {
+        const uint8_t *__restrict su = g.su, *__restrict sv = g.sv;
+        uint8_t *__restrict iu = g.iu, *__restrict iv = g.iv;
+        for (int x = 0; x < w; x++) {
+            iu[x] = su[2 * x];
+            iv[x] = sv[2 * x];
+        }
+    }
+}
+
+void update_row_c(const BgRow &a) { update_row<0>(a); }
+void gather_row_c(const BgGather &g) { gather_row(g); }
+#if defined(__GNUC__)
+// 128-bit vectors: x86-64's baseline (SSE2) and aarch64's (NEON).
+void update_row_v8(const BgRow &a) { update_row<8>(a); }
+#endif
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void update_row_avx2(const BgRow &a) { update_row<16>(a); }
+__attribute__((target("avx2"))) void gather_row_avx2(const BgGather &g) { gather_row(g); }
 #endif
 
 } // namespace
+
+void background_dsp_init(Dsp *dsp, unsigned flags)
+{
+    dsp->bg_update_row = update_row_c;
+    dsp->bg_gather_row = gather_row_c;
+#if defined(__GNUC__)
+    // The 8-lane build wherever the CPU has more than the portable path:
+    // every x86-64 since 2006 (SSSE3) and every aarch64 (NEON).
+    if (flags & (kCpuSSSE3 | kCpuNEON))
+        dsp->bg_update_row = update_row_v8;
+#endif
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (flags & kCpuAVX2) {
+        dsp->bg_update_row = update_row_avx2;
+        dsp->bg_gather_row = gather_row_avx2;
+    }
+#endif
+    (void)flags;
+}
+
+Dsp Background::make_dsp()
+{
+    Dsp d;
+    dsp_init(&d, cpu_flags());
+    return d;
+}
 
 void NoiseLevel::begin()
 {
@@ -329,82 +464,70 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     if (sample)
         noise_.begin();
     const int cs = kScale / 2; // working pixel to chroma sample
-    // Locals and restrict pointers: stores through uint8_t pointers may
-    // alias anything, and would make the compiler reload every member after
-    // each one.
     const bool color = color_;
     const int w = w_, h = h_;
-    const size_t cstep = (size_t)cs * img.c_step;
-    // Each row's samples are gathered first into contiguous buffers, so that
-    // the loop below reads unit-stride arrays, kLanes pixels at a time.
+    // Each row's samples are gathered first into contiguous buffers (I420's
+    // chroma is read in place), so that the update reads unit-stride arrays.
     line_y_.resize(w);
     line_u_.resize(w);
     line_v_.resize(w);
+    const bool identity = gain_ == 1.0;
     for (int y = 0; y < h; y++) {
-        const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
-        uint8_t *__restrict iy = line_y_.data();
-        for (int x = 0; x < w; x++)
-            iy[x] = gain_lut_[src[x * kScale]];
-        const size_t row = (size_t)y * w;
-        uint8_t *__restrict my = my_.data() + row;
-        uint8_t *__restrict vy = vy_.data() + row;
-        uint8_t *__restrict mask = mask_.data() + row;
-        const uint8_t *__restrict frozen = frozen_.data() + row;
-        uint8_t *__restrict iu = line_u_.data(), *__restrict iv = line_v_.data();
-        uint8_t *__restrict mu = mu_.data() + row;
-        uint8_t *__restrict mv = mv_.data() + row;
+        BgGather g;
+        g.src_y = img.y + (size_t)(y * kScale) * img.y_stride;
+        g.lut = identity ? nullptr : gain_lut_;
+        g.w = w;
+        g.iy = line_y_.data();
+        g.iu = line_u_.data();
+        g.iv = line_v_.data();
+        g.su = g.sv = nullptr;
+        g.c_step = (int)img.c_step * cs;
+        const uint8_t *iu = g.iu, *iv = g.iv;
         if (color) {
-            const uint8_t *su = img.u + (size_t)(y * cs) * img.u_stride;
-            const uint8_t *sv = img.v + (size_t)(y * cs) * img.v_stride;
-            for (int x = 0; x < w; x++) {
-                iu[x] = su[x * cstep];
-                iv[x] = sv[x * cstep];
+            g.su = img.u + (size_t)(y * cs) * img.u_stride;
+            g.sv = img.v + (size_t)(y * cs) * img.v_stride;
+            if (g.c_step == 1) {
+                iu = g.su;
+                iv = g.sv;
+            } else if (g.c_step != 2) { // no plane reads so yet; kept general
+                for (int x = 0; x < w; x++) {
+                    g.iu[x] = g.su[(size_t)x * g.c_step];
+                    g.iv[x] = g.sv[(size_t)x * g.c_step];
+                }
+                g.su = nullptr;
             }
         }
+        dsp_.bg_gather_row(g);
+        const size_t row = (size_t)y * w;
+        const uint8_t *iy = line_y_.data();
+        const uint8_t *frozen = frozen_.data() + row;
         // The model before this frame: the old buffers, or on a (re)start
         // the image's own samples (and V at kVMax). Never the buffers
-        // written, so the restrict pointers hold.
-        const uint8_t *__restrict om = restart ? iy : old_my_.data() + row;
-        const uint8_t *__restrict ov = restart ? line_vmax_.data() : old_vy_.data() + row;
-        const uint8_t *__restrict ou = restart ? iu : old_mu_.data() + row;
-        const uint8_t *__restrict ow = restart ? iv : old_mv_.data() + row;
+        // written.
+        BgRow r;
+        r.om = restart ? iy : old_my_.data() + row;
+        r.ov = restart ? line_vmax_.data() : old_vy_.data() + row;
+        r.ou = restart ? iu : old_mu_.data() + row;
+        r.ow = restart ? iv : old_mv_.data() + row;
         if (sample && y % 4 == 0)
-            noise_.sample(iy, om, color ? iu : nullptr, ou, iv, ow, frozen, w);
-        int x = 0;
-#if defined(__GNUC__)
-        for (; x + kLanes <= w; x += kLanes) {
-            Lanes M = load(om + x), V = load(ov + x);
-            const Lanes I = load(iy + x), live = load(frozen + x) == splat<Lanes>(0);
-            Lanes fg;
-            if (color) {
-                Lanes BU = load(ou + x), BV = load(ow + x);
-                fg = colour(I, load(iu + x), load(iv + x), M, V, BU, BV, live, rates);
-                store(mu + x, BU);
-                store(mv + x, BV);
-            } else {
-                fg = luma(I, M, V, live, rates);
-            }
-            store(my + x, M);
-            store(vy + x, V);
-            store(mask + x, fg ? splat<Lanes>(255) : splat<Lanes>(0));
-        }
-#endif
-        for (; x < w; x++) {
-            int M = om[x], V = ov[x];
-            const int live = !frozen[x];
-            int fg;
-            if (color) {
-                int BU = ou[x], BV = ow[x];
-                fg = colour<int>(iy[x], iu[x], iv[x], M, V, BU, BV, live, rates);
-                mu[x] = (uint8_t)BU;
-                mv[x] = (uint8_t)BV;
-            } else {
-                fg = luma<int>(iy[x], M, V, live, rates);
-            }
-            my[x] = (uint8_t)M;
-            vy[x] = (uint8_t)V;
-            mask[x] = fg ? 255 : 0;
-        }
+            noise_.sample(iy, r.om, color ? iu : nullptr, r.ou, iv, r.ow, frozen, w);
+        r.iy = iy;
+        r.iu = iu;
+        r.iv = iv;
+        r.frozen = frozen;
+        r.my = my_.data() + row;
+        r.vy = vy_.data() + row;
+        r.mu = mu_.data() + row;
+        r.mv = mv_.data() + row;
+        r.mask = mask_.data() + row;
+        r.w = w;
+        r.color = color;
+        r.step = rates.step;
+        r.warm = rates.warm;
+        r.vmin = rates.vmin;
+        r.chroma_fg = rates.chroma_fg;
+        r.shadow_chroma = rates.shadow_chroma;
+        dsp_.bg_update_row(r);
     }
     if (sample)
         noise_.end(restart ? 0 : elapsed_s(t_us, old_dims_.last_us));

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dsp.h"
 #include "mask.h"
 #include "planes.h"
 
@@ -34,7 +35,7 @@ private:
 
 class Background {
 public:
-    Background() { set_gain(1.0); }
+    Background() : dsp_(make_dsp()) { set_gain(1.0); }
     // One working pixel for 2 x 2 frame pixels (the chroma grid of 4:2:0).
     static constexpr int kScale = 2;
 
@@ -79,6 +80,8 @@ private:
     void set_gain(double gain);
     void swap_models();
 
+    static Dsp make_dsp();
+    Dsp dsp_; // the row kernels for this CPU, chosen when the tracker is made
     int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0;
     bool color_ = false;
     int frames_ = 0;

@@ -7,6 +7,7 @@ namespace ctrack {
 void dsp_init(Dsp *dsp, unsigned flags)
 {
     convert_dsp_init(dsp, flags);
+    background_dsp_init(dsp, flags);
 }
 
 } // namespace ctrack

@@ -10,15 +10,42 @@
 
 namespace ctrack {
 
+// One row of the background model's update (background.cc): the frame's
+// samples at the working pixels (iy, iu, iv), the model before the frame
+// (om, ov, ou, ow), the model after it and the foreground mask (my, vy, mu,
+// mv, mask), w pixels; frozen pixels are not learnt.
+struct BgRow {
+    const uint8_t *iy, *iu, *iv, *om, *ov, *ou, *ow, *frozen;
+    uint8_t *my, *vy, *mu, *mv, *mask;
+    int w;
+    bool color, warm;
+    int step, vmin, chroma_fg, shadow_chroma;
+};
+
+// Gathering one row's samples: luma every other pixel of src_y, through
+// lut unless it is null, into iy; chroma interleaved (c_step 2: NV12) from
+// su and sv into iu and iv when su is not null.
+struct BgGather {
+    const uint8_t *src_y, *lut, *su, *sv;
+    uint8_t *iy, *iu, *iv;
+    int w, c_step;
+};
+
 struct Dsp {
     // One row of packed pixels to its luma, and each pixel's chroma before
     // the 2x2 means (convert.cc): BGR24 and RGB24.
     void (*bgr_row)(const uint8_t *src, int w, uint8_t *y, int16_t *u, int16_t *v);
     void (*rgb_row)(const uint8_t *src, int w, uint8_t *y, int16_t *u, int16_t *v);
+    // The background model (background.cc).
+    void (*bg_update_row)(const BgRow &row);
+    void (*bg_gather_row)(const BgGather &row);
 };
 
 // Fills every entry with the fastest build the flags (CpuFlag bits) allow.
 void dsp_init(Dsp *dsp, unsigned flags);
+
+// Each module's part of dsp_init().
+void background_dsp_init(Dsp *dsp, unsigned flags);
 
 } // namespace ctrack
 

@@ -6,6 +6,7 @@
 #include "common.h"
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -71,6 +72,100 @@ START_TEST(rows_match_the_portable_build)
 }
 END_TEST
 
+// The background model's row update and gathering: random rows of every
+// width up to 70 (each vector build's tail), colour and grey, warming up or
+// not, frozen pixels, rates over their range; then values near the
+// decisions' edges (model and image a few levels apart).
+START_TEST(background_rows_match_the_portable_build)
+{
+    Dsp ref;
+    dsp_init(&ref, 0);
+    for (unsigned flags : runnable()) {
+        Dsp d;
+        dsp_init(&d, flags);
+        for (int trial = 0; trial < 400; trial++) {
+            const int w = 1 + trial % 70;
+            const bool near = trial % 3 == 0;
+            std::vector<uint8_t> in[8];
+            for (auto &v : in) {
+                v.resize(w);
+                for (uint8_t &b : v)
+                    b = next_byte();
+            }
+            if (near) // image within a few levels of the model
+                for (int x = 0; x < w; x++) {
+                    in[0][x] = (uint8_t)std::min(255, in[3][x] + next_byte() % 9);
+                    in[1][x] = (uint8_t)std::min(255, in[5][x] + next_byte() % 5);
+                }
+            for (int x = 0; x < w; x++)
+                in[7][x] = next_byte() % 4 == 0; // frozen
+            BgRow r;
+            r.iy = in[0].data();
+            r.iu = in[1].data();
+            r.iv = in[2].data();
+            r.om = in[3].data();
+            r.ov = in[4].data();
+            r.ou = in[5].data();
+            r.ow = in[6].data();
+            r.frozen = in[7].data();
+            r.w = w;
+            r.color = trial % 2 == 0;
+            r.warm = trial % 5 == 0;
+            r.step = r.warm ? 1 + next_byte() % 16 : 1;
+            r.vmin = 25 + next_byte() % 30;
+            r.chroma_fg = 24 + next_byte() % 20;
+            r.shadow_chroma = 8 + next_byte() % 10;
+            std::vector<uint8_t> out_a[5], out_b[5];
+            BgRow a = r, b = r;
+            for (int k = 0; k < 5; k++) {
+                out_a[k].assign(w, 7);
+                out_b[k].assign(w, 7);
+            }
+            a.my = out_a[0].data(), a.vy = out_a[1].data(), a.mu = out_a[2].data();
+            a.mv = out_a[3].data(), a.mask = out_a[4].data();
+            b.my = out_b[0].data(), b.vy = out_b[1].data(), b.mu = out_b[2].data();
+            b.mv = out_b[3].data(), b.mask = out_b[4].data();
+            ref.bg_update_row(a);
+            d.bg_update_row(b);
+            for (int k = 0; k < 5; k++)
+                ck_assert_msg(out_a[k] == out_b[k],
+                              "flags 0x%x, width %d, trial %d, output %d: differs from the "
+                              "portable build", flags, w, trial, k);
+
+            // Gathering: luma every other pixel, with and without the
+            // exposure table; NV12's interleaved chroma.
+            std::vector<uint8_t> src(2 * (size_t)w + 1), lut(256), uv(2 * (size_t)w + 1);
+            for (uint8_t &v : src)
+                v = next_byte();
+            for (uint8_t &v : uv)
+                v = next_byte();
+            for (int i = 0; i < 256; i++)
+                lut[i] = (uint8_t)(255 - i / 2);
+            std::vector<uint8_t> ga[3], gb[3];
+            for (int k = 0; k < 3; k++) {
+                ga[k].assign(w, 1);
+                gb[k].assign(w, 1);
+            }
+            BgGather g;
+            g.src_y = src.data();
+            g.lut = trial % 2 ? lut.data() : nullptr;
+            g.su = trial % 3 ? uv.data() : nullptr;
+            g.sv = uv.data() + 1;
+            g.c_step = 2;
+            g.w = w;
+            BgGather ha = g, hb = g;
+            ha.iy = ga[0].data(), ha.iu = ga[1].data(), ha.iv = ga[2].data();
+            hb.iy = gb[0].data(), hb.iu = gb[1].data(), hb.iv = gb[2].data();
+            ref.bg_gather_row(ha);
+            d.bg_gather_row(hb);
+            for (int k = 0; k < 3; k++)
+                ck_assert_msg(ga[k] == gb[k], "flags 0x%x, width %d: gathering differs", flags,
+                              w);
+        }
+    }
+}
+END_TEST
+
 // A whole odd-sized frame with padded rows through packed_to_i420.
 START_TEST(frames_match_the_portable_build)
 {
@@ -124,6 +219,7 @@ int main()
     TCase *tc = tcase_create("dsp");
     tcase_add_test(tc, rows_match_the_portable_build);
     tcase_add_test(tc, frames_match_the_portable_build);
+    tcase_add_test(tc, background_rows_match_the_portable_build);
     tcase_add_test(tc, mask_forces_the_portable_path);
     suite_add_tcase(s, tc);
     return run_suite(s);
