@@ -75,6 +75,32 @@ def best_of(n, cmd):
     return runs[0][0], max(r[1] for r in runs), runs[0][2]
 
 
+def median_of(n, cmd):
+    """The median of n runs' wall times (its mean shift figure too), and the
+    largest RSS."""
+    runs = sorted(timed_child(cmd) for _ in range(n))
+    mid = runs[len(runs) // 2]
+    return mid[0], max(r[1] for r in runs), mid[2]
+
+
+def memcpy_us(width, height, n=2000):
+    """The memory-bandwidth floor: one I420 frame copied (numpy's copyto is
+    a memcpy), median microseconds over n copies between two buffers larger
+    than the caches together (so each copy reads memory, as a frame read
+    from the page cache does)."""
+    size = width * height * 3 // 2
+    k = max(2, (64 << 20) // size)
+    src = np.random.default_rng(1).integers(0, 256, size * k, dtype=np.uint8)
+    dst = np.empty(size, np.uint8)
+    times = []
+    for i in range(n):
+        a = src[(i % k) * size:(i % k + 1) * size]
+        t0 = time.perf_counter()
+        np.copyto(dst, a)
+        times.append(time.perf_counter() - t0)
+    return 1e6 * float(np.median(times))
+
+
 def mog2_ms(y4m, frames):
     """OpenCV MOG2 alone, ms per frame on one thread (apply() only)."""
     import cv2
@@ -244,34 +270,42 @@ def main():
     for label, y4m, det, size in (("768x576", pets, PETS_DET, "768x576"),
                                   ("1920x1080", hd, hd_det, "1920x1080")):
         warm(y4m)
-        wall, rss, ms_us = best_of(reps, [ct, "-q", "-d", det, "-r", "7", "-o", "/dev/null", y4m])
-        wall_det, rss_det, _ = best_of(reps, [ct, "-q", "-d", det, "-s", size, "-r", "7",
-                                              "-o", "/dev/null"])
-        wall_pix, rss_pix, _ = best_of(reps, [ct, "-q", "-r", "7", "-o", "/dev/null", y4m])
+        runs = 1 if a.quick else 5  # the speed targets are medians of 5
+        wall, rss, ms_us = median_of(runs, [ct, "-q", "-d", det, "-r", "7", "-o", "/dev/null",
+                                            y4m])
+        wall_det, rss_det, _ = median_of(runs, [ct, "-q", "-d", det, "-s", size, "-r", "7",
+                                                "-o", "/dev/null"])
+        wall_pix, rss_pix, _ = median_of(runs, [ct, "-q", "-r", "7", "-o", "/dev/null", y4m])
         mog = mog2_ms(y4m, 100 if a.quick else 300)
+        w_px, h_px = (int(v) for v in size.split("x"))
+        floor_us = memcpy_us(w_px, h_px)
         whole[label] = {"detections_pixels_fps": 795 / wall, "detections_pixels_rss_kib": rss,
                         "detections_fps": 795 / wall_det, "detections_rss_kib": rss_det,
                         "pixels_fps": 795 / wall_pix, "pixels_rss_kib": rss_pix,
                         "mog2_ms_per_frame": mog, "mog2_fps": 1e3 / mog,
-                        "mean_shift_us_per_person": ms_us}
+                        "mean_shift_us_per_person": ms_us, "memcpy_us_per_frame": floor_us}
     report["whole_pipeline"] = whole
     say("")
     say("## The whole pipeline: ct-track reading Y4M from the page cache, one core")
     say("")
     say("ct-track over all 795 PETS09-S2L1 frames with the public detections, output "
-        "discarded, best of %d; beside it OpenCV's MOG2 alone (`apply()` on one thread) "
-        "on the same frames in the same run." % reps)
+        "discarded, median of %d runs; beside it OpenCV's MOG2 alone (`apply()` on one "
+        "thread) on the same frames in the same run, and the memory-bandwidth floor: one "
+        "frame copied (a memcpy, measured in the same run)."
+        % (1 if a.quick else 5))
     say("")
     say("| resolution | ct-track, pixels only | ct-track, detections + pixels | "
         "ct-track, detections only | MOG2 alone | pixels only / MOG2 | "
-        "detections + pixels / MOG2 | mean shift per person | peak RSS |")
-    say("|---|---|---|---|---|---|---|---|---|")
+        "detections + pixels / MOG2 | memcpy of a frame | pixels only's frame / memcpy | "
+        "mean shift per person | peak RSS |")
+    say("|---|---|---|---|---|---|---|---|---|---|---|")
     for label, w in whole.items():
         say("| %s | %.0f frames/s | %.0f frames/s | %.0f frames/s | %.0f frames/s (%.2f ms) | "
-            "%.1fx | %.1fx | %.1f us (%.2f%% of MOG2's frame) | %.1f MiB |"
+            "%.1fx | %.1fx | %.0f us | %.1fx | %.1f us (%.2f%% of MOG2's frame) | %.1f MiB |"
             % (label, w["pixels_fps"], w["detections_pixels_fps"], w["detections_fps"],
                w["mog2_fps"], w["mog2_ms_per_frame"], w["pixels_fps"] / w["mog2_fps"],
-               w["detections_pixels_fps"] / w["mog2_fps"],
+               w["detections_pixels_fps"] / w["mog2_fps"], w["memcpy_us_per_frame"],
+               1e6 / w["pixels_fps"] / w["memcpy_us_per_frame"],
                w["mean_shift_us_per_person"],
                100 * w["mean_shift_us_per_person"] / (1e3 * w["mog2_ms_per_frame"]),
                w["detections_pixels_rss_kib"] / 1024))

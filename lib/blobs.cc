@@ -200,6 +200,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     dropped_ = 0;
     flooded_ = false;
     clean(mask, w, h);
+    cls.new_mask(); // the votes remembered were on another mask
     // A mask more than kMaxForeground foreground is no picture of people (a
     // light switched, the camera moved, noise the model has not learnt):
     // nothing in it is a candidate.

@@ -121,6 +121,7 @@ void PixelCandidates::verify(int64_t t_us, const Planes &img, const std::vector<
     Stopwatch sw;
     update_background(t_us, img, tracks);
     stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    classifier_.new_mask();
     blobs_.clean(background_.mask(), background_.width(), background_.height());
     have_mask_ = true;
     stage_ns[CT_STAGE_BLOBS] += sw.lap();

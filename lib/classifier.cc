@@ -206,8 +206,17 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
 
 Vote Classifier::vote(const uint8_t *mask, int w, const Rect &r)
 {
+    for (const Memo &m : memo_)
+        if (m.mask == mask && m.w == w && m.r.x0 == r.x0 && m.r.y0 == r.y0 && m.r.x1 == r.x1 &&
+            m.r.y1 == r.y1)
+            return m.vote;
     shape_of(mask, w, r.x0, r.y0, r.x1, r.y1, &shape_);
-    return classify(shape_, default_params());
+    const Vote v = classify(shape_, default_params());
+    // A few dozen boxes a frame at most are asked for; past that (a flood
+    // of blobs) the rest are not remembered.
+    if (memo_.size() < kMemoBoxes)
+        memo_.push_back(Memo{mask, w, r, v});
+    return v;
 }
 
 ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, float left,

@@ -80,18 +80,38 @@ Vote classify(const Shape &s, const ClassifierParams &params);
 
 // The vote on a mask's foreground inside a box, with the scratch memory a
 // shape needs kept from one call to the next.
+// The boxes a Classifier remembers the votes of, per mask.
+constexpr size_t kMemoBoxes = 256;
+
 class Classifier {
 public:
+    Classifier() { memo_.reserve(kMemoBoxes); }
+    // A new mask (or new contents in the same buffer): the votes remembered
+    // for the last one are forgotten. Within a frame a box is voted on once
+    // (the blob merging asks for the boxes the candidates then report).
+    // BlobFinder::find() calls it for the mask it cleans.
+    void new_mask() { memo_.clear(); }
     // The vote on the foreground of the w x h mask inside r (within it).
     Vote vote(const uint8_t *mask, int w, const Rect &r);
     // The vote inside r (clipped to the mask) as the candidate the API
     // reports, with the box (left, top, width, height) in frame pixels.
     ct_candidate candidate(const uint8_t *mask, int w, int h, Rect r, float left, float top,
                            float width, float height);
-    size_t memory_bytes() const { return shape_.cells.capacity() + shape_.todo.capacity() * sizeof(int); }
+    size_t memory_bytes() const
+    {
+        return shape_.cells.capacity() + shape_.todo.capacity() * sizeof(int) +
+               memo_.capacity() * sizeof(Memo);
+    }
 
 private:
+    struct Memo {
+        const uint8_t *mask;
+        int w;
+        Rect r;
+        Vote vote;
+    };
     Shape shape_;
+    std::vector<Memo> memo_;
 };
 
 // Whether the vote rejects a candidate: enough regions voted and no

@@ -129,10 +129,22 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
     pairs_.clear();
     for (int i = 0; i < n; i++)
         gate_.overlapping(i, tracks_[(size_t)track_idx[(size_t)i]].cue, min_iou, pairs_);
-    if (w > 0)
+    if (w > 0) {
+        // A pair alone in its row and its column is matched whatever it
+        // looks like: its cost stays under the limit (the IoU gate holds and
+        // DDIS > 0), and nothing competes for it. DDIS runs only where pairs
+        // compete.
+        row_pairs_.assign((size_t)n, 0);
+        col_pairs_.assign((size_t)m, 0);
+        for (const Pair &p : pairs_) {
+            row_pairs_[(size_t)p.row]++;
+            col_pairs_[(size_t)p.col]++;
+        }
         for (Pair &p : pairs_)
-            p.cost += w * (1.0 - bank_.similarity(tracks_[(size_t)track_idx[(size_t)p.row]],
-                                                   det_idx[(size_t)p.col]));
+            if (row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1)
+                p.cost += w * (1.0 - bank_.similarity(tracks_[(size_t)track_idx[(size_t)p.row]],
+                                                       det_idx[(size_t)p.col]));
+    }
     assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
         const int j = row_to_col_[(size_t)i];

@@ -117,6 +117,7 @@ private:
     // Association's scratch, reused from step to step.
     Gate gate_;
     std::vector<Pair> pairs_;
+    std::vector<int> row_pairs_, col_pairs_; // pairs per row and column in match()
     Assigner assigner_;
     std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     std::vector<char> det_used_;
