@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 #include <opencv2/imgproc.hpp>
@@ -72,10 +73,46 @@ Rect unite(const Rect &a, const Rect &b)
                 std::max(a.y1, b.y1)};
 }
 
+// The rows and columns of the mask that hold foreground: [x0, x1) x [y0,
+// y1), empty (x0 == x1) when it holds none.
+Rect foreground_bounds(const uint8_t *mask, int w, int h)
+{
+    Rect r{w, h, 0, 0};
+    for (int y = 0; y < h; y++) {
+        const uint8_t *row = mask + (size_t)y * w;
+        int x = 0;
+        // Eight bytes at a time: most rows are background.
+        uint64_t any = 0;
+        for (; x + 8 <= w; x += 8) {
+            uint64_t v;
+            std::memcpy(&v, row + x, 8);
+            any |= v;
+        }
+        for (; x < w; x++)
+            any |= row[x];
+        if (!any)
+            continue;
+        int a = 0, b = w;
+        while (!row[a])
+            a++;
+        while (!row[b - 1])
+            b--;
+        r.x0 = std::min(r.x0, a);
+        r.x1 = std::max(r.x1, b);
+        r.y0 = std::min(r.y0, y);
+        r.y1 = y + 1;
+    }
+    if (r.x1 <= r.x0)
+        return Rect{0, 0, 0, 0};
+    return r;
+}
+
 } // namespace
 
 struct BlobFinder::Impl {
+    // The cleaned mask, whole; outside `area` it is 0.
     cv::Mat clean, tmp;
+    cv::Rect area;
     cv::Mat close_k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 5));
     std::vector<std::vector<cv::Point>> contours;
     std::vector<Rect> blobs;
@@ -122,10 +159,35 @@ void BlobFinder::clean(const uint8_t *mask, int w, int h)
 {
     Impl &m = *impl_;
     const cv::Mat in(h, w, CV_8UC1, const_cast<uint8_t *>(mask), (size_t)w);
+    if (m.clean.rows != h || m.clean.cols != w || !m.clean.data) {
+        m.area = cv::Rect();
+        try {
+            allocating([&] { m.clean.create(h, w, CV_8UC1); });
+        } catch (...) {
+            // A failed create() may leave the size set and no pixels.
+            m.clean.release();
+            throw;
+        }
+        m.clean.setTo(0);
+    }
+    // Work in proportion to what moves: the closing runs over the
+    // foreground's rows and columns only, with a margin of twice its
+    // kernel's half size (2 columns, 4 rows), past which the whole frame's
+    // closing is 0 too: the same mask, to the bit.
+    m.clean(m.area).setTo(0);
+    const Rect fg = foreground_bounds(mask, w, h);
+    if (fg.x1 <= fg.x0) {
+        m.area = cv::Rect();
+        return;
+    }
+    const int x0 = std::max(0, fg.x0 - 2), y0 = std::max(0, fg.y0 - 4);
+    const int x1 = std::min(w, fg.x1 + 2), y1 = std::min(h, fg.y1 + 4);
+    m.area = cv::Rect(x0, y0, x1 - x0, y1 - y0);
     // Closing only: an opening, even 3 x 3, erases legs a few working
     // pixels wide, and the boxes lose them (docs/notes/pixels.md). Specks
     // are dropped by area in find().
-    allocating([&] { cv::morphologyEx(in, m.clean, cv::MORPH_CLOSE, m.close_k); });
+    cv::Mat out = m.clean(m.area);
+    allocating([&] { cv::morphologyEx(in(m.area), out, cv::MORPH_CLOSE, m.close_k); });
 }
 
 Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
@@ -204,14 +266,23 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     // A mask more than kMaxForeground foreground is no picture of people (a
     // light switched, the camera moved, noise the model has not learnt):
     // nothing in it is a candidate.
-    if (cv::countNonZero(m.clean) > kMaxForeground * w * h) {
-        flooded_ = true;
-        return;
+    if (m.area.empty()) {
+        m.contours.clear();
+    } else {
+        if (cv::countNonZero(m.clean(m.area)) > kMaxForeground * w * h) {
+            flooded_ = true;
+            return;
+        }
+        // The contours of the foreground's area, in the whole mask's
+        // coordinates (the area has a margin of background all round, or
+        // ends at the image's edge: the whole mask's contours, point for
+        // point).
+        allocating([&] {
+            m.clean(m.area).copyTo(m.tmp); // findContours may change its input
+            cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE,
+                             m.area.tl());
+        });
     }
-    allocating([&] {
-        m.clean.copyTo(m.tmp); // findContours may change its input
-        cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
-    });
 
     std::vector<Rect> &b = m.blobs;
     b.clear();
