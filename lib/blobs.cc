@@ -278,8 +278,12 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         // ends at the image's edge: the whole mask's contours, point for
         // point).
         allocating([&] {
-            m.clean(m.area).copyTo(m.tmp); // findContours may change its input
-            cv::findContours(m.tmp, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE,
+            // findContours may change its input: a copy, in a buffer of the
+            // whole mask's size kept from frame to frame.
+            m.tmp.create(h, w, CV_8UC1);
+            cv::Mat work = m.tmp(m.area);
+            m.clean(m.area).copyTo(work);
+            cv::findContours(work, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE,
                              m.area.tl());
         });
     }

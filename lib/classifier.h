@@ -80,12 +80,12 @@ Vote classify(const Shape &s, const ClassifierParams &params);
 
 // The vote on a mask's foreground inside a box, with the scratch memory a
 // shape needs kept from one call to the next.
-// The boxes a Classifier remembers the votes of, per mask.
-constexpr size_t kMemoBoxes = 256;
+// The boxes a Classifier remembers the votes of, per mask (the buffer grows
+// to what the scene needs, at most this).
+constexpr size_t kMemoBoxes = 64;
 
 class Classifier {
 public:
-    Classifier() { memo_.reserve(kMemoBoxes); }
     // A new mask (or new contents in the same buffer): the votes remembered
     // for the last one are forgotten. Within a frame a box is voted on once
     // (the blob merging asks for the boxes the candidates then report).

@@ -224,22 +224,43 @@ static ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
     return out;
 }
 
+// TUD-Campus's frames and public detections, and two trackers of one
+// source: the reference, never disturbed, and the one whose allocations
+// fail.
+struct TudReplay {
+    det_file df;
+    video_input *in = nullptr;
+    ct_tracker *ref = nullptr, *t = nullptr;
+    explicit TudReplay(int source)
+    {
+        load_detections("TUD-Campus", &df);
+        char err[512];
+        video_params ip = {0, 0, CT_FORMAT_I420};
+        video_info info;
+        ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+        ct_config cfg;
+        ct_config_default(&cfg, sizeof cfg);
+        cfg.source = source;
+        ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+        ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
+    }
+    ~TudReplay()
+    {
+        ct_tracker_destroy(ref);
+        ct_tracker_destroy(t);
+        video_close(in);
+        detfile_free(&df);
+    }
+};
+
 static void pixels_out_of_memory(int source, bool packed = false)
 {
     std::vector<uint8_t> bgr;
-    det_file df;
-    load_detections("TUD-Campus", &df);
+    TudReplay replay(source);
+    det_file &df = replay.df;
+    video_input *in = replay.in;
+    ct_tracker *ref = replay.ref, *t = replay.t;
     char err[512];
-    video_params ip = {0, 0, CT_FORMAT_I420};
-    video_input *in = nullptr;
-    video_info info;
-    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
-    ct_config cfg;
-    ct_config_default(&cfg, sizeof cfg);
-    cfg.source = source;
-    ct_tracker *ref = nullptr, *t = nullptr;
-    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
-    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
     int refused = 0, frames = 0;
     for (int k = 1;; k++) {
         ct_frame f;
@@ -283,10 +304,6 @@ static void pixels_out_of_memory(int source, bool packed = false)
     }
     ck_assert_int_gt(frames, 20);
     ck_assert_int_gt(refused, frames);
-    ct_tracker_destroy(ref);
-    ct_tracker_destroy(t);
-    video_close(in);
-    detfile_free(&df);
 }
 
 START_TEST(pixels_only_out_of_memory_changes_nothing)
@@ -349,19 +366,11 @@ enum Mode { DETECTIONS, DETECTIONS_AND_PIXELS, PIXELS };
 
 static void every_allocation_fails(Mode mode)
 {
-    det_file df;
-    load_detections("TUD-Campus", &df);
+    TudReplay replay(mode == PIXELS ? CT_SOURCE_PIXELS : CT_SOURCE_DETECTIONS);
+    det_file &df = replay.df;
+    video_input *in = replay.in;
+    ct_tracker *ref = replay.ref, *t = replay.t;
     char err[512];
-    video_params ip = {0, 0, CT_FORMAT_I420};
-    video_input *in = nullptr;
-    video_info info;
-    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
-    ct_config cfg;
-    ct_config_default(&cfg, sizeof cfg);
-    cfg.source = mode == PIXELS ? CT_SOURCE_PIXELS : CT_SOURCE_DETECTIONS;
-    ct_tracker *ref = nullptr, *t = nullptr;
-    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
-    ck_assert_int_eq(ct_tracker_create(&cfg, &t), CT_OK);
     long refused = 0, most = 0;
     const long mallocs_before = failed_mallocs;
     int k = 1;
@@ -422,10 +431,6 @@ static void every_allocation_fails(Mode mode)
     if (mode != DETECTIONS)
         ck_assert_int_gt(failed_mallocs - mallocs_before, 0);
 #endif
-    ct_tracker_destroy(ref);
-    ct_tracker_destroy(t);
-    video_close(in);
-    detfile_free(&df);
 }
 
 START_TEST(every_allocation_fails_detections_only)

@@ -9,16 +9,8 @@
 #include <cstring>
 
 #include "detfile.h"
-#include "memfile.h"
+#include "fuzz.h"
 
-#define CHECK(cond)                                                                    \
-    do {                                                                               \
-        if (!(cond)) {                                                                 \
-            std::fprintf(stderr, "fuzz_detfile: %s:%d: check failed: %s\n", __FILE__,  \
-                         __LINE__, #cond);                                             \
-            std::abort();                                                              \
-        }                                                                              \
-    } while (0)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -28,17 +28,9 @@
 #include <vector>
 
 #include "ctrack/ctrack.h"
+#include "fuzz.h"
 
 namespace {
-
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            std::fprintf(stderr, "fuzz_feed: %s:%d: check failed: %s\n", __FILE__,  \
-                         __LINE__, #cond);                                           \
-            std::abort();                                                            \
-        }                                                                            \
-    } while (0)
 
 float fuzz_float(FuzzedDataProvider &in, float lo, float hi)
 {
@@ -224,11 +216,12 @@ void fuzz_frame(FuzzedDataProvider &in, Frame *fr, int64_t *clock, int *shape)
 std::vector<ct_detection> fuzz_detections(FuzzedDataProvider &in, const int *shape)
 {
     std::vector<ct_detection> dets;
-    const int kind = in.ConsumeIntegralInRange<int>(0, 15);
+    const int kind = in.ConsumeIntegralInRange<int>(0, 255);
     if (kind == 0) {
         // A flood: thousands of boxes around one, as a detector without
-        // non-maximum suppression gives.
-        const size_t n = in.ConsumeIntegralInRange<size_t>(500, 3000);
+        // non-maximum suppression gives (rarely: with pixels and appearance
+        // one costs as much as thousands of ordinary steps).
+        const size_t n = in.ConsumeIntegralInRange<size_t>(1000, 2500);
         const float x = in.ConsumeFloatingPointInRange<float>(0, (float)shape[0]);
         const float y = in.ConsumeFloatingPointInRange<float>(0, (float)shape[1]);
         for (size_t k = 0; k < n; k++)
@@ -236,7 +229,7 @@ std::vector<ct_detection> fuzz_detections(FuzzedDataProvider &in, const int *sha
                             50.0f, 0.3f + 0.7f * (float)(k % 11) / 10.0f, 0});
         return dets;
     }
-    const size_t n = in.ConsumeIntegralInRange<size_t>(0, kind < 4 ? 0 : 12);
+    const size_t n = in.ConsumeIntegralInRange<size_t>(0, kind < 64 ? 0 : 12);
     for (size_t k = 0; k < n; k++) {
         ct_detection d;
         if (in.ConsumeIntegralInRange<int>(0, 7) == 0) {

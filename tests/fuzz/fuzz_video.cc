@@ -11,17 +11,9 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "memfile.h"
+#include "fuzz.h"
 #include "video.h"
 
-#define CHECK(cond)                                                                   \
-    do {                                                                              \
-        if (!(cond)) {                                                                \
-            std::fprintf(stderr, "fuzz_video: %s:%d: check failed: %s\n", __FILE__,   \
-                         __LINE__, #cond);                                            \
-            std::abort();                                                             \
-        }                                                                             \
-    } while (0)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
