@@ -32,6 +32,29 @@ constexpr std::array<uint16_t, 65536> kSqrt = make_sqrt_table();
 // Kernel profile in Q12.
 constexpr int kKernelOne = 4096;
 
+// Windows larger than this (half-sides, pixels) are cut to it: no frame is
+// near so large (16384 at most), and the arithmetic below stays in range.
+constexpr double kMaxHalfSide = 1 << 20;
+
+// A pixel position as an int, clamped to +-2^30 first: a window far outside
+// any frame converts without overflow (and then holds no pixel).
+inline int to_int(double v)
+{
+    return (int)std::max(-1073741824.0, std::min(1073741824.0, v));
+}
+
+// d^2 / h2 in Q12 (kKernelOne at the ellipse's edge), at most kKernelOne:
+// exact in 64-bit integers while |d| < 2^25 (windows under 131,072 pixels,
+// Q8), past which d^2 * kKernelOne could overflow and the ratio is taken in
+// floating point.
+inline int32_t kernel_term(int64_t d, int64_t h2)
+{
+    constexpr int64_t kExact = int64_t(1) << 25;
+    if (d > -kExact && d < kExact)
+        return (int32_t)std::min<int64_t>(kKernelOne, d * d * kKernelOne / h2);
+    return (int32_t)std::min<double>(kKernelOne, (double)d * (double)d * kKernelOne / (double)h2);
+}
+
 inline int sample_step(double area, double target)
 {
     return std::max(1, (int)std::floor(std::sqrt(area / target)));
@@ -68,13 +91,15 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
 {
     clear_hist();
     n_samples_ = 0;
-    if (hw < 1 || hh < 1)
+    if (!(hw >= 1 && hh >= 1))
         return 0;
+    hw = std::min(hw, kMaxHalfSide);
+    hh = std::min(hh, kMaxHalfSide);
     const int s = sample_step(M_PI * hw * hh, kTargetSamples); // the ellipse's area
-    const int x0 = std::max(0, (int)std::ceil(cx - hw)), x1 = std::min(img.width - 1, (int)std::floor(cx + hw));
-    const int y0 = std::max(0, (int)std::ceil(cy - hh)), y1 = std::min(img.height - 1, (int)std::floor(cy + hh));
+    const int x0 = std::max(0, to_int(std::ceil(cx - hw))), x1 = std::min(img.width - 1, to_int(std::floor(cx + hw)));
+    const int y0 = std::max(0, to_int(std::ceil(cy - hh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + hh)));
     if (x1 < x0 || y1 < y0)
-        return 0;
+        return 0; // also when cx or cy is NaN
     // r^2 = dx^2 / hw^2 + dy^2 / hh^2 in Q12, as a column term (a table, one
     // division a column) plus a row term; positions in Q8 so that sub-pixel
     // centres count.
@@ -86,7 +111,7 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     columns_.resize(ncols);
     for (int i = 0; i < ncols; i++) {
         int64_t dx = ((int64_t)(x0 + i * s) << 8) - cx8;
-        columns_[i] = (int32_t)std::min<int64_t>(kKernelOne, dx * dx * kKernelOne / hw2);
+        columns_[i] = kernel_term(dx, hw2);
     }
     // The loop works on locals, which the compiler keeps in registers: the
     // members would be reloaded after every store.
@@ -102,7 +127,7 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     uint64_t total = 0;
     for (int y = y0; y <= y1; y += s) {
         int64_t dy = ((int64_t)y << 8) - cy8;
-        const int32_t row = (int32_t)(dy * dy * kKernelOne / hh2);
+        const int32_t row = kernel_term(dy, hh2);
         if (row >= kKernelOne)
             continue;
         const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
@@ -164,10 +189,12 @@ void MeanShift::background(const Planes &img, double cx, double cy, double w, do
                            double grow, uint16_t *out)
 {
     const double g = std::sqrt(grow);
+    w = std::min(w, kMaxHalfSide);
+    h = std::min(h, kMaxHalfSide);
     const double ow = w * g / 2, oh = h * g / 2, iw = w / 2, ih = h / 2;
     const int s = sample_step(w * h * (grow - 1), kTargetRingSamples);
-    const int x0 = std::max(0, (int)std::ceil(cx - ow)), x1 = std::min(img.width - 1, (int)std::floor(cx + ow));
-    const int y0 = std::max(0, (int)std::ceil(cy - oh)), y1 = std::min(img.height - 1, (int)std::floor(cy + oh));
+    const int x0 = std::max(0, to_int(std::ceil(cx - ow))), x1 = std::min(img.width - 1, to_int(std::floor(cx + ow)));
+    const int y0 = std::max(0, to_int(std::ceil(cy - oh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + oh)));
     clear_hist();
     uint64_t total = 0;
     for (int y = y0; y <= y1; y += s)

@@ -68,7 +68,9 @@ for t in $targets; do
     mkdir -p "$corpus" "$work/crashes/$t"
     echo "fuzz: fuzz_$t for $seconds s (corpus $corpus)" >&2
     log=$work/$t.log
-    if ! "$build/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 \
+    # UndefinedBehaviorSanitizer stops at its first report, as in make sanitize.
+    if ! UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+        "$build/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 \
         -max_len="$(max_len "$t")" -timeout=30 -rss_limit_mb=4096 \
         -artifact_prefix="$work/crashes/$t/" "$corpus" "$seeds/$t" > "$log" 2>&1; then
         echo "fuzz: fuzz_$t FAILED; the input is in $work/crashes/$t:" >&2

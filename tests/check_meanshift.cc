@@ -310,6 +310,32 @@ START_TEST(converges_on_synthetic_shifts)
 }
 END_TEST
 
+// Windows far larger than any frame, far outside it, or NaN (a track's box
+// predicted far out): the kernel's integer arithmetic stays in range and
+// doubles convert to ints only in range (the fuzzer found d^2 * 4096
+// overflowing for windows of 60,000 pixels; make sanitize stops at such a
+// report), and nothing out of the frame is read.
+START_TEST(absurd_windows_stay_in_range)
+{
+    MeanShift ms;
+    Image a = scene(100, 100, 1.0, 7);
+    ColorModel m;
+    ms.build(a.planes(), 100, 100, 40, 80, &m);
+    const double windows[][4] = {
+        {100, 100, 6e4, 6e4},  {100, 100, 3e6, 3e6},    {5e5, 5e5, 1.2e6, 1.2e6},
+        {1e12, 100, 40, 80},
+        {-1e12, -1e12, 1e13, 1e13}, {100, 1e9, 40, 1e9}, {NAN, 100, 40, 80},
+        {100, 100, NAN, 80},   {100, 100, INFINITY, 80}};
+    for (const auto &w : windows) {
+        ColorModel mw;
+        ms.build(a.planes(), w[0], w[1], w[2], w[3], &mw); // samples, and the ring around
+        MeanShiftResult r = ms.track(a.planes(), w[0], w[1], w[2], w[3], m, MeanShiftParams());
+        (void)r;
+        ms.learn(a.planes(), w[0], w[1], w[2], w[3], 26, 45000, &mw);
+    }
+}
+END_TEST
+
 // A person grown by 10% is found within 5% in scale: the scale step moves
 // 5% a frame, so two frames of tracking reach it.
 START_TEST(finds_the_scale)
@@ -418,6 +444,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, integer_agrees_with_float_on_real_clips);
     tcase_add_test(tc, follows_real_people);
     tcase_add_test(tc, converges_on_synthetic_shifts);
+    tcase_add_test(tc, absurd_windows_stay_in_range);
     tcase_add_test(tc, coarse_to_fine_finds_fast_motion);
     tcase_add_test(tc, finds_the_scale);
     tcase_add_test(tc, step_agrees_with_opencv);

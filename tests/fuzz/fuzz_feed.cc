@@ -144,13 +144,15 @@ void fuzz_frame(FuzzedDataProvider &in, Frame *fr, int64_t *clock, int *shape)
     ct_frame_default(&f, sizeof f);
     // The timestamp usually moves on by a frame; sometimes it stands, goes
     // back or jumps to the end of time.
+    // (Wrapping round, as the caller's clock might: no overflow here.)
+    auto add = [&](int64_t d) { *clock = (int64_t)((uint64_t)*clock + (uint64_t)d); };
     switch (in.ConsumeIntegralInRange<int>(0, 15)) {
     case 0: break;
-    case 1: *clock -= 40000; break;
+    case 1: add(-40000); break;
     case 2: *clock = INT64_MAX; break;
     case 3: *clock = INT64_MIN; break;
-    case 4: *clock += in.ConsumeIntegral<int64_t>() / 2; break;
-    default: *clock += in.ConsumeIntegralInRange<int64_t>(1, 400000); break;
+    case 4: add(in.ConsumeIntegral<int64_t>() / 2); break;
+    default: add(in.ConsumeIntegralInRange<int64_t>(1, 400000)); break;
     }
     f.timestamp_us = *clock;
     f.format = kFormats[in.ConsumeIntegralInRange<size_t>(0, 6)];
