@@ -140,10 +140,19 @@ void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
             row_pairs_[(size_t)p.row]++;
             col_pairs_[(size_t)p.col]++;
         }
-        for (Pair &p : pairs_)
-            if (row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1)
-                p.cost += w * (1.0 - bank_.similarity(tracks_[(size_t)track_idx[(size_t)p.row]],
-                                                       det_idx[(size_t)p.col]));
+        size_t competing = 0;
+        for (const Pair &p : pairs_)
+            competing += row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1;
+        // A flood (a detector without non-maximum suppression) makes
+        // thousands of competing pairs, each a DDIS of some 30 us: past
+        // kMaxDdisPairs the step is associated by overlap alone, as without
+        // appearance, so that its work stays bounded.
+        if (competing <= kMaxDdisPairs)
+            for (Pair &p : pairs_)
+                if (row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1)
+                    p.cost += w * (1.0 - bank_.similarity(
+                                             tracks_[(size_t)track_idx[(size_t)p.row]],
+                                             det_idx[(size_t)p.col]));
     }
     assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
@@ -180,19 +189,23 @@ void Engine::reidentify(const ct_detection *dets)
         // The size the person had when last seen: the coasted one drifts.
         const double h = std::max<double>(t.seen_h, kMinSide);
         const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
-        const size_t first = pairs_.size();
         gate_.near(i, t.cx.x, t.cy.x, reach, h, pairs_);
-        // Nearness only gates: the cost is how unlike the track each looks,
-        // and a pair as unlike as the limit is no pair.
-        size_t kept = first;
-        for (size_t k = first; k < pairs_.size(); k++) {
-            Pair p = pairs_[k];
-            p.cost = 1.0 - bank_.similarity(t, pool_dets_[(size_t)p.col]);
-            if (p.cost < limit)
-                pairs_[kept++] = p;
-        }
-        pairs_.resize(kept);
     }
+    // Bounded like association: a flood that would take more than
+    // kMaxDdisPairs DDIS re-identifies nobody this step.
+    if (pairs_.size() > kMaxDdisPairs)
+        return;
+    // Nearness only gates: the cost is how unlike the track each looks, and
+    // a pair as unlike as the limit is no pair.
+    size_t kept = 0;
+    for (size_t k = 0; k < pairs_.size(); k++) {
+        Pair p = pairs_[k];
+        const Track &t = tracks_[(size_t)pool_tracks_[(size_t)p.row]];
+        p.cost = 1.0 - bank_.similarity(t, pool_dets_[(size_t)p.col]);
+        if (p.cost < limit)
+            pairs_[kept++] = p;
+    }
+    pairs_.resize(kept);
     assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
         const int j = row_to_col_[(size_t)i];

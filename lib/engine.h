@@ -20,6 +20,10 @@
 
 namespace ctrack {
 
+// The most DDIS an association or re-identification runs in one step
+// (about 30 ms); a flood past it is matched by overlap alone.
+constexpr size_t kMaxDdisPairs = 1024;
+
 class Engine {
 public:
     explicit Engine(const ct_config &cfg);

@@ -68,6 +68,52 @@ START_TEST(flood_of_50000)
 }
 END_TEST
 
+/* The same flood with pixels: appearance (DDIS) and mean shift run, and
+ * the work per step stays bounded (at most kMaxDdisPairs, 1024, DDIS for
+ * each association pass and for re-identification). */
+START_TEST(flood_with_pixels)
+{
+    enum { W = 1920, H = 1088, N = 5000 };
+    ct_tracker *t = test_tracker(NULL);
+    static ct_detection people[PEOPLE];
+    flood_people(people, PEOPLE);
+    uint8_t *grey = malloc((size_t)W * H);
+    ck_assert_ptr_nonnull(grey);
+    for (size_t i = 0; i < (size_t)W * H; i++)
+        grey[i] = (uint8_t)(64 + (i * 2654435761u >> 26)); /* texture */
+    ct_frame f;
+    ct_frame_default(&f, sizeof f);
+    f.format = CT_FORMAT_GRAY8;
+    f.width = W;
+    f.height = H;
+    f.planes[0] = grey;
+    f.strides[0] = W;
+    int64_t us = 0;
+    for (int k = 0; k < 4; k++, us += 40000) { /* confirmed, with templates */
+        f.timestamp_us = us;
+        ck_assert_int_eq(ct_tracker_feed(t, &f, people, PEOPLE), CT_OK);
+    }
+    ct_detection *boxes = malloc(N * sizeof *boxes);
+    ck_assert_ptr_nonnull(boxes);
+    flood_boxes(boxes, N, PEOPLE);
+    ct_stats st;
+    st.size = sizeof st;
+    for (int step = 0; step < 2; step++, us += 40000) {
+        ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
+        const uint64_t before = st.ddis_runs;
+        f.timestamp_us = us;
+        ck_assert_int_eq(ct_tracker_feed(t, &f, boxes, N), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
+        printf("flood with pixels: %llu DDIS, %llu templates, %llu live\n", (unsigned long long)(st.ddis_runs - before), (unsigned long long)st.template_builds, (unsigned long long)st.live_tracks);
+        ck_assert_msg(st.ddis_runs - before <= 4 * 1024, "%llu DDIS in one step",
+                      (unsigned long long)(st.ddis_runs - before));
+    }
+    free(boxes);
+    free(grey);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("bounds");
@@ -76,6 +122,7 @@ int main(void)
     tcase_set_timeout(tc, 0);
     tcase_add_test(tc, flood_of_5000);
     tcase_add_test(tc, flood_of_50000);
+    tcase_add_test(tc, flood_with_pixels);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }
