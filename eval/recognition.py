@@ -384,17 +384,18 @@ def under_detection(c, seq, min_iou=0.4):
 
 
 def accepted_negatives(c, l, v):
-    """Where the negatives the vote accepts lie: their count, the frames
-    they span, the median centre, and how many lie within 60 pixels of it
-    (one place: usually one person the ground truth lacks)."""
+    """Where the negatives the vote accepts lie: None when it accepts none,
+    else a dict of their count, the frames they span, their median centre,
+    and the indices (into c) of those within 60 pixels of it (one place:
+    usually one person the ground truth lacks)."""
     idx = np.flatnonzero(v & (l == 0))
     if len(idx) == 0:
-        return 0, 0, 0, (0, 0), 0
+        return None
     cx = c[idx, 1] + c[idx, 3] / 2
     cy = c[idx, 2] + c[idx, 4] / 2
     mx, my = np.median(cx), np.median(cy)
-    near = np.hypot(cx - mx, cy - my) <= 60
-    return len(idx), int(c[idx, 0].min()), int(c[idx, 0].max()), (mx, my), int(near.sum()), near, idx
+    return {"count": len(idx), "first": int(c[idx, 0].min()), "last": int(c[idx, 0].max()),
+            "centre": (mx, my), "near": idx[np.hypot(cx - mx, cy - my) <= 60]}
 
 
 def main():
@@ -445,14 +446,13 @@ def main():
         k_old = l_old >= 0
         older.append((name, balanced(v[k_old], l_old[k_old]), balanced(s[k_old], l_old[k_old])))
         acc = accepted_negatives(c, l, v)
-        if acc[0]:
+        if acc:
             # The vote's balanced accuracy without the negatives at that one place.
             l_wo = l.copy()
-            l_wo[acc[6][acc[5]]] = UNCERTAIN
+            l_wo[acc["near"]] = UNCERTAIN
             k_wo = l_wo >= 0
-            where.append((name, acc[:5], balanced(v[k_wo], l_wo[k_wo])))
-        else:
-            where.append((name, acc, None))
+            acc["without"] = balanced(v[k_wo], l_wo[k_wo])
+        where.append((name, acc))
     print("thresholds in use:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, shipped)),
           "fill %.3f" % shipped_fill)
     print("thresholds chosen now:", " ".join("%s %.3f" % (n, t) for n, t in zip(REGIONS, th)),
@@ -465,12 +465,12 @@ def main():
               % (r[0][:38], r[1], r[2], r[3], u[1], u[2], u[3], r[4], 100 * r[5][0],
                  100 * r[5][1], 100 * r[5][2], 100 * r[6][0], r[7][0], r[7][1], 100 * r[8][0],
                  100 * r[9][0], 100 * r[10][0]))
-    for name, acc, b in where:
-        if acc[0]:
+    for name, acc in where:
+        if acc:
             print("%-38s the vote accepts %d negatives, frames %d-%d, %d of them within 60 px "
                   "of (%.0f, %.0f); without those: %.1f%%"
-                  % (name[:38], acc[0], acc[1], acc[2], acc[4], acc[3][0], acc[3][1],
-                     100 * b[0]))
+                  % (name[:38], acc["count"], acc["first"], acc["last"], len(acc["near"]),
+                     *acc["centre"], 100 * acc["without"][0]))
     if a.write:
         write_test_blobs(a.build, sets)
         write_params(th, max_fill, max_top)
@@ -503,12 +503,14 @@ def main():
                        100 * r[6][2], 100 * r[9][0], 100 * r[10][0], 100 * r[10][1],
                        100 * r[10][2], r[7][0], r[7][1]))
         f.write(RECOGNITION_WHERE)
-        for name, acc, b in where:
-            if acc[0]:
+        for name, acc in where:
+            if acc:
+                b = acc["without"]
                 f.write("- %s: %d, in frames %d to %d; %d of them within 60 pixels of (%.0f, "
                         "%.0f). Without those, the vote's balanced accuracy is %.1f%% "
-                        "(%.1f / %.1f).\n" % (name, acc[0], acc[1], acc[2], acc[4], acc[3][0],
-                                               acc[3][1], 100 * b[0], 100 * b[1], 100 * b[2]))
+                        "(%.1f / %.1f).\n" % (name, acc["count"], acc["first"], acc["last"],
+                                               len(acc["near"]), *acc["centre"], 100 * b[0],
+                                               100 * b[1], 100 * b[2]))
             else:
                 f.write("- %s: none.\n" % name)
         f.write("\nThe thresholds in use (box heights): %s; a blob that fills more than %.3f "

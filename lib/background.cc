@@ -486,15 +486,9 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         if (color) {
             g.su = img.u + (size_t)(y * cs) * img.u_stride;
             g.sv = img.v + (size_t)(y * cs) * img.v_stride;
-            if (g.c_step == 1) {
+            if (g.c_step == 1) { // I420: read in place; NV12 (2) is gathered
                 iu = g.su;
                 iv = g.sv;
-            } else if (g.c_step != 2) { // no plane reads so yet; kept general
-                for (int x = 0; x < w; x++) {
-                    g.iu[x] = g.su[(size_t)x * g.c_step];
-                    g.iv[x] = g.sv[(size_t)x * g.c_step];
-                }
-                g.su = nullptr;
             }
         }
         dsp_.bg_gather_row(g);

@@ -104,7 +104,6 @@ START_TEST(flood_with_pixels)
         f.timestamp_us = us;
         ck_assert_int_eq(ct_tracker_feed(t, &f, boxes, N), CT_OK);
         ck_assert_int_eq(ct_tracker_get_stats(t, &st), CT_OK);
-        printf("flood with pixels: %llu DDIS, %llu templates, %llu live\n", (unsigned long long)(st.ddis_runs - before), (unsigned long long)st.template_builds, (unsigned long long)st.live_tracks);
         ck_assert_msg(st.ddis_runs - before <= 4 * 1024, "%llu DDIS in one step",
                       (unsigned long long)(st.ddis_runs - before));
     }
