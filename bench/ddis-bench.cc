@@ -1,9 +1,10 @@
 // ddis-bench: the cost of one DDIS (a track's template against a
-// candidate) and of one template build (FLANN index), at PETS09-S2L1 box
-// sizes with the default template (6 x 12 points of 11 numbers), on the real
-// crossing clips of tests/data/pets09-crops; and the heap allocations each
-// makes (FLANN's KDTreeSingleIndex allocates in findNeighbors and in
-// buildIndex).
+// candidate) and of one template build, at PETS09-S2L1 box sizes with the
+// default template (6 x 12 points of 11 numbers), on the real crossing clips
+// of tests/data/pets09-crops, with the library's search of all pairs and
+// with FLANN's kd-tree; the heap allocations each makes (FLANN's
+// KDTreeSingleIndex allocates in findNeighbors and in buildIndex), and how
+// many DDIS values the two searches give differently.
 //   ddis-bench [--json FILE] DATA_DIR (tests/data)
 #include <chrono>
 #include <cstdio>
@@ -85,46 +86,73 @@ int main(int argc, char **argv)
     }
     std::fclose(f);
     const size_t n = desc.size();
-    std::vector<Template> templates(n);
-    Ddis ddis;
 
-    // Builds: every box's template, several rounds.
-    const int rounds = 200;
-    unsigned long long a0 = ct_allocations;
-    auto t0 = clk::now();
-    for (int r = 0; r < rounds; r++)
-        for (size_t i = 0; i < n; i++)
-            templates[i].build(desc[i].data());
-    double build_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / (rounds * n);
-    double build_allocs = (double)(ct_allocations - a0) / (rounds * n);
-
-    // DDIS: every template against every box.
-    volatile double sink = 0;
-    a0 = ct_allocations;
-    t0 = clk::now();
-    const int drounds = 20;
-    for (int r = 0; r < drounds; r++)
+    // Each search: the appearance library's own (all pairs at kPoints) and
+    // FLANN's kd-tree on the same templates.
+    struct Figures {
+        double build_us, build_allocs, ddis_us, ddis_allocs;
+        std::vector<double> values;
+    };
+    auto measure = [&](bool tree) {
+        Figures fig;
+        std::vector<Template> templates(n);
+        Ddis ddis;
+        // Builds: every box's template, several rounds.
+        const int rounds = 200;
+        unsigned long long a0 = ct_allocations;
+        auto t0 = clk::now();
+        for (int r = 0; r < rounds; r++)
+            for (size_t i = 0; i < n; i++)
+                templates[i].build(desc[i].data(), tree);
+        fig.build_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() /
+                       (rounds * n);
+        fig.build_allocs = (double)(ct_allocations - a0) / (rounds * n);
+        // DDIS: every template against every box.
         for (size_t i = 0; i < n; i++)
             for (size_t j = 0; j < n; j++)
-                sink = sink + ddis.ddis(templates[i], desc[j].data());
-    double calls = (double)drounds * n * n;
-    double ddis_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / calls;
-    double ddis_allocs = (double)(ct_allocations - a0) / calls;
+                fig.values.push_back(ddis.ddis(templates[i], desc[j].data()));
+        volatile double sink = 0;
+        const int drounds = 20;
+        a0 = ct_allocations;
+        t0 = clk::now();
+        for (int r = 0; r < drounds; r++)
+            for (size_t i = 0; i < n; i++)
+                for (size_t j = 0; j < n; j++)
+                    sink = sink + ddis.ddis(templates[i], desc[j].data());
+        const double calls = (double)drounds * n * n;
+        fig.ddis_us = std::chrono::duration<double, std::micro>(clk::now() - t0).count() / calls;
+        fig.ddis_allocs = (double)(ct_allocations - a0) / calls;
+        return fig;
+    };
+    const Figures all = measure(false), tree = measure(true);
+    size_t differ = 0;
+    for (size_t k = 0; k < all.values.size(); k++)
+        differ += all.values[k] != tree.values[k];
 
     std::printf("DDIS at PETS09-S2L1 box sizes (mean height %.0f px), template of %d x %d points "
-                "of %d numbers:\n", heights / n, kGridX, kGridY, kDescDim);
-    std::printf("  one DDIS (track against candidate): %.2f us, %.1f heap allocations (FLANN's "
-                "findNeighbors, one a query)\n", ddis_us, ddis_allocs);
-    std::printf("  one template build (FLANN index):   %.2f us, %.1f heap allocations\n", build_us,
-                build_allocs);
+                "of %d numbers, %zu boxes:\n", heights / n, kGridX, kGridY, kDescDim, n);
+    std::printf("  search                     one DDIS              one template build\n");
+    std::printf("  all pairs (the default)  %7.2f us %5.1f allocs  %6.2f us %5.1f allocs\n",
+                all.ddis_us, all.ddis_allocs, all.build_us, all.build_allocs);
+    std::printf("  FLANN kd-tree            %7.2f us %5.1f allocs  %6.2f us %5.1f allocs\n",
+                tree.ddis_us, tree.ddis_allocs, tree.build_us, tree.build_allocs);
+    std::printf("  all pairs against FLANN: %.2fx the speed of a DDIS; %zu of %zu DDIS values "
+                "differ\n", tree.ddis_us / all.ddis_us, differ, all.values.size());
+    const double ddis_us = all.ddis_us, ddis_allocs = all.ddis_allocs;
+    const double build_us = all.build_us, build_allocs = all.build_allocs;
     if (json) {
         FILE *o = std::fopen(json, "w");
         if (!o)
             return 1;
         std::fprintf(o, "{\"ddis_us\": %.4f, \"ddis_allocs\": %.2f, \"build_us\": %.4f, "
                         "\"build_allocs\": %.2f, \"points\": %d, \"dims\": %d, "
-                        "\"mean_box_height\": %.1f}\n",
-                     ddis_us, ddis_allocs, build_us, build_allocs, kPoints, kDescDim, heights / n);
+                        "\"mean_box_height\": %.1f, \"flann_ddis_us\": %.4f, "
+                        "\"flann_ddis_allocs\": %.2f, \"flann_build_us\": %.4f, "
+                        "\"flann_build_allocs\": %.2f, \"ddis_values\": %zu, "
+                        "\"ddis_values_differing\": %zu}\n",
+                     ddis_us, ddis_allocs, build_us, build_allocs, kPoints, kDescDim, heights / n,
+                     tree.ddis_us, tree.ddis_allocs, tree.build_us, tree.build_allocs,
+                     all.values.size(), differ);
         std::fclose(o);
     }
     return 0;

@@ -77,10 +77,10 @@ void describe(const Planes &img, double left, double top, double width, double h
         }
 }
 
-void Template::build(const float *descriptors)
+void Template::build(const float *descriptors, bool tree)
 {
     desc.assign(descriptors, descriptors + (size_t)kPoints * kDescDim);
-    index.build(desc.data(), kPoints, kDescDim);
+    index.build(desc.data(), kPoints, kDescDim, tree);
 }
 
 void Ddis::neighbours(const Template &p, const float *q, float eps)

@@ -1,6 +1,6 @@
 // Appearance templates and Deformable Diversity Similarity (DDIS; Talmi,
 // Mechrez and Zelnik-Manor, CVPR 2017; the paper's eq. 2-6; ALGORITHM.md
-// section 3), the nearest neighbours from a FLANN kd-tree (nnindex.h).
+// section 3), the nearest neighbours from nnindex.h.
 #ifndef CTRACK_APPEARANCE_H
 #define CTRACK_APPEARANCE_H
 
@@ -25,11 +25,13 @@ constexpr int kDescDim = 11;
 void describe(const Planes &img, double left, double top, double width, double height,
               float *out);
 
-// One template: the descriptors of a box and a kd-tree over them.
+// One template: the descriptors of a box and the index that finds their
+// nearest neighbours (no tree at kPoints: see NNIndex::kBruteForceMax).
 struct Template {
     std::vector<float> desc;
     NNIndex index;
-    void build(const float *descriptors);
+    // With tree, a FLANN kd-tree indexes them however few (for comparisons).
+    void build(const float *descriptors, bool tree = false);
 };
 
 // The scratch of DDIS computations; keeps its buffers.

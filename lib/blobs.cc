@@ -1,15 +1,12 @@
-// The only file of the library that includes OpenCV.
 #include "blobs.h"
 
 #include "background.h"
+#include "regions.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <new>
-
-#include <opencv2/imgproc.hpp>
 
 namespace ctrack {
 
@@ -44,21 +41,6 @@ constexpr double kMinCentreGap = 0.2;
 // blob heights below both (a head is about 0.13 of a person's height;
 // docs/tuning.md has the choice).
 constexpr double kHeadDip = 0.06;
-
-// Runs OpenCV calls that allocate. OpenCV reports a failed allocation as
-// cv::Exception (StsNoMem); the library's callers know it as
-// std::bad_alloc, which ct_tracker_feed() turns into
-// CT_ERROR_OUT_OF_MEMORY (tests/check_oom.cc fails OpenCV's mallocs).
-template <typename F> void allocating(F &&f)
-{
-    try {
-        f();
-    } catch (const cv::Exception &e) {
-        if (e.code == cv::Error::StsNoMem)
-            throw std::bad_alloc();
-        throw;
-    }
-}
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -107,95 +89,106 @@ Rect foreground_bounds(const uint8_t *mask, int w, int h)
     return r;
 }
 
+// Non-zero bytes among n.
+int count_nonzero(const uint8_t *p, int n)
+{
+    int c = 0;
+    for (int i = 0; i < n; i++)
+        c += p[i] != 0;
+    return c;
+}
+
 } // namespace
 
 struct BlobFinder::Impl {
-    // The cleaned mask, whole; outside `area` it is 0.
-    cv::Mat clean, tmp;
-    cv::Rect area;
-    cv::Mat close_k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 5));
-    std::vector<std::vector<cv::Point>> contours;
+    // The cleaned mask, whole (w x h); outside `area` it is 0.
+    std::vector<uint8_t> clean;
+    int w = 0, h = 0;
+    Rect area{0, 0, 0, 0};
+    Closing closing;
+    OuterRegions regions;
     std::vector<Rect> blobs;
     std::vector<int> columns, centres, tops;
     std::vector<float> votes;
+    const uint8_t *at(int x, int y) const { return &clean[(size_t)y * w + x]; }
+    // Foreground pixels of column x in rows [y0, y1).
+    int column_count(int x, int y0, int y1) const
+    {
+        int c = 0;
+        for (int y = y0; y < y1; y++)
+            c += *at(x, y) != 0;
+        return c;
+    }
 };
 
-BlobFinder::BlobFinder()
-{
-    allocating([&] { impl_.reset(new Impl); });
-}
+BlobFinder::BlobFinder() : impl_(new Impl) {}
 BlobFinder::~BlobFinder() = default;
 
 const uint8_t *BlobFinder::cleaned() const
 {
-    return impl_->clean.data;
+    return impl_->clean.empty() ? nullptr : impl_->clean.data();
 }
 
 int BlobFinder::width() const
 {
-    return impl_->clean.cols;
+    return impl_->w;
 }
 
 int BlobFinder::height() const
 {
-    return impl_->clean.rows;
+    return impl_->h;
 }
 
 size_t BlobFinder::memory_bytes() const
 {
     const Impl &m = *impl_;
-    return m.clean.total() + m.tmp.total() + m.blobs.capacity() * sizeof(Rect) +
-           m.votes.capacity() * sizeof(float) +
-           (m.columns.capacity() + m.centres.capacity() +
-            m.tops.capacity()) * sizeof(int);
+    return m.clean.capacity() + m.closing.memory_bytes() + m.regions.memory_bytes() +
+           m.blobs.capacity() * sizeof(Rect) + m.votes.capacity() * sizeof(float) +
+           (m.columns.capacity() + m.centres.capacity() + m.tops.capacity()) * sizeof(int);
 }
 
 float BlobFinder::vote(Classifier &cls, const Rect &r) const
 {
-    return cls.vote(impl_->clean.data, impl_->clean.cols, r).score;
+    return cls.vote(impl_->clean.data(), impl_->w, r).score;
 }
 
 void BlobFinder::clean(const uint8_t *mask, int w, int h)
 {
     Impl &m = *impl_;
-    const cv::Mat in(h, w, CV_8UC1, const_cast<uint8_t *>(mask), (size_t)w);
-    if (m.clean.rows != h || m.clean.cols != w || !m.clean.data) {
-        m.area = cv::Rect();
-        try {
-            allocating([&] { m.clean.create(h, w, CV_8UC1); });
-        } catch (...) {
-            // A failed create() may leave the size set and no pixels.
-            m.clean.release();
-            throw;
-        }
-        m.clean.setTo(0);
+    if (m.w != w || m.h != h || m.clean.size() != (size_t)w * h) {
+        m.area = Rect{0, 0, 0, 0};
+        // Sized first, then the size recorded: a failed allocation leaves
+        // the old mask and size together.
+        m.clean.assign((size_t)w * h, 0);
+        m.w = w;
+        m.h = h;
     }
     // Work in proportion to what moves: the closing runs over the
     // foreground's rows and columns only, with a margin of twice its
     // kernel's half size (2 columns, 4 rows), past which the whole frame's
     // closing is 0 too: the same mask, to the bit.
-    m.clean(m.area).setTo(0);
+    for (int y = m.area.y0; y < m.area.y1; y++)
+        std::memset(&m.clean[(size_t)y * w + m.area.x0], 0, (size_t)(m.area.x1 - m.area.x0));
+    m.area = Rect{0, 0, 0, 0};
     const Rect fg = foreground_bounds(mask, w, h);
-    if (fg.x1 <= fg.x0) {
-        m.area = cv::Rect();
+    if (fg.x1 <= fg.x0)
         return;
-    }
-    const int x0 = std::max(0, fg.x0 - 2), y0 = std::max(0, fg.y0 - 4);
-    const int x1 = std::min(w, fg.x1 + 2), y1 = std::min(h, fg.y1 + 4);
-    m.area = cv::Rect(x0, y0, x1 - x0, y1 - y0);
+    static_assert(Closing::kCloseWidth == 3 && Closing::kCloseHeight == 5, "the margin");
+    const Rect area{std::max(0, fg.x0 - 2), std::max(0, fg.y0 - 4), std::min(w, fg.x1 + 2),
+                    std::min(h, fg.y1 + 4)};
     // Closing only: an opening, even 3 x 3, erases legs a few working
     // pixels wide, and the boxes lose them (docs/notes/pixels.md). Specks
     // are dropped by area in find().
-    cv::Mat out = m.clean(m.area);
-    allocating([&] { cv::morphologyEx(in(m.area), out, cv::MORPH_CLOSE, m.close_k); });
+    m.closing.run(mask, m.clean.data(), w, h, area);
+    m.area = area;
 }
 
 Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
 {
-    const cv::Mat &clean = impl_->clean;
+    const Impl &m = *impl_;
     Rect p{x0, r.y1, x1, r.y0};
     for (int y = r.y0; y < r.y1; y++)
-        if (cv::countNonZero(clean.row(y).colRange(x0, x1)) > 0) {
+        if (count_nonzero(m.at(x0, y), x1 - x0) > 0) {
             p.y0 = std::min(p.y0, y);
             p.y1 = std::max(p.y1, y + 1);
         }
@@ -211,7 +204,7 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
     top.assign(bw, r.y1);
     for (int x = r.x0; x < r.x1; x++)
         for (int y = r.y0; y < r.y1; y++)
-            if (m.clean.at<uint8_t>(y, x)) {
+            if (*m.at(x, y)) {
                 top[x - r.x0] = y;
                 break;
             }
@@ -266,33 +259,20 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     // A mask more than kMaxForeground foreground is no picture of people (a
     // light switched, the camera moved, noise the model has not learnt):
     // nothing in it is a candidate.
-    if (m.area.empty()) {
-        m.contours.clear();
-    } else {
-        if (cv::countNonZero(m.clean(m.area)) > kMaxForeground * w * h) {
+    std::vector<Rect> &b = m.blobs;
+    b.clear();
+    if (m.area.x1 > m.area.x0) {
+        long fg = 0;
+        for (int y = m.area.y0; y < m.area.y1; y++)
+            fg += count_nonzero(m.at(m.area.x0, y), m.area.x1 - m.area.x0);
+        if (fg > kMaxForeground * w * h) {
             flooded_ = true;
             return;
         }
-        // The contours of the foreground's area, in the whole mask's
-        // coordinates (the area has a margin of background all round, or
-        // ends at the image's edge: the whole mask's contours, point for
-        // point).
-        allocating([&] {
-            // findContours may change its input: a copy, in a buffer of the
-            // whole mask's size kept from frame to frame.
-            m.tmp.create(h, w, CV_8UC1);
-            cv::Mat work = m.tmp(m.area);
-            m.clean(m.area).copyTo(work);
-            cv::findContours(work, m.contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE,
-                             m.area.tl());
-        });
-    }
-
-    std::vector<Rect> &b = m.blobs;
-    b.clear();
-    for (const auto &c : m.contours) {
-        cv::Rect r = cv::boundingRect(c);
-        b.push_back(Rect{r.x, r.y, r.x + r.width, r.y + r.height});
+        // The boxes of the outer regions of the foreground's area (it has a
+        // margin of background all round, or ends at the image's edge: the
+        // whole mask's regions), in the order findContours gave them.
+        m.regions.find(m.clean.data(), w, m.area, b);
     }
     // At most kMaxBlobs go on, the largest (then the first found): merging
     // fragments looks at every pair, and a flickering mask could make
@@ -351,7 +331,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
         int area = 0;
         for (int y = r.y0; y < r.y1; y++)
-            area += cv::countNonZero(m.clean.row(y).colRange(r.x0, r.x1));
+            area += count_nonzero(m.at(r.x0, y), r.x1 - r.x0);
         // A speck or a fragment: under a part of the person who would stand
         // where the blob's feet are (working pixels; while the size model
         // knows nothing, under the prior's smallest person).
@@ -399,7 +379,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         auto emptiest = [&](int lo, int hi, int want) {
             int best = want, best_n = bh + 1;
             for (int x = lo; x <= hi; x++) {
-                const int n = cv::countNonZero(m.clean.col(x).rowRange(r.y0, r.y1));
+                const int n = m.column_count(x, r.y0, r.y1);
                 if (n < best_n || (n == best_n && std::abs(x - want) < std::abs(best - want))) {
                     best_n = n;
                     best = x;

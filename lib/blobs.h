@@ -1,6 +1,6 @@
-// From the foreground mask to person-sized candidates: morphology, contours
-// (OpenCV), fragments merged, groups split, with the classifier's consent
-// where a merge or a split is in doubt. OpenCV's headers stay in blobs.cc.
+// From the foreground mask to person-sized candidates: a closing, the outer
+// regions (regions.h), fragments merged, groups split, with the
+// classifier's consent where a merge or a split is in doubt.
 #ifndef CTRACK_BLOBS_H
 #define CTRACK_BLOBS_H
 

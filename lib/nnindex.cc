@@ -84,28 +84,87 @@ NNIndex &NNIndex::operator=(const NNIndex &other)
     if (other.n_ == 0) {
         impl_.reset();
         points_.clear();
+        by_dim_.clear();
         n_ = dim_ = 0;
         return *this;
     }
-    build(other.points_.data(), other.n_, other.dim_);
+    build(other.points_.data(), other.n_, other.dim_, other.impl_ && other.n_ <= kBruteForceMax);
     return *this;
 }
 
-void NNIndex::build(const float *points, int n, int dim)
+void NNIndex::build(const float *points, int n, int dim, bool force_tree)
 {
-    // Empty until the tree stands: if an allocation fails on the way, the
+    // Empty until the index stands: if an allocation fails on the way, the
     // index is left empty, never half built.
     impl_.reset();
     n_ = dim_ = 0;
     points_.assign(points, points + (size_t)n * dim);
-    if (n > 0)
+    if (n > 0 && (force_tree || n > kBruteForceMax)) {
+        by_dim_.clear();
         impl_.reset(new Impl(points_.data(), n, dim));
+    } else {
+        padded_ = (n + kLanes - 1) / kLanes * kLanes;
+        by_dim_.assign((size_t)padded_ * dim, std::numeric_limits<float>::infinity());
+        for (int i = 0; i < n; i++)
+            for (int d = 0; d < dim; d++)
+                by_dim_[(size_t)d * padded_ + i] = points_[(size_t)i * dim + d];
+    }
     n_ = n;
     dim_ = dim;
 }
 
+void NNIndex::brute_force(const float *q, int *index, float *dist2) const
+{
+    const int n = n_;
+    if (n == 0) {
+        *index = -1;
+        *dist2 = std::numeric_limits<float>::infinity();
+        return;
+    }
+    // Every point's squared distance, the points in the vector lanes (the
+    // rows of by_dim_ are padded to a multiple of kLanes with points at
+    // infinity, never the nearest); the dimensions summed as
+    // flann::L2 does (four at a time, each group's sum added to the total,
+    // then the rest one by one), so that both searches see the same
+    // distances.
+    const int stride = padded_;
+    float acc[kBruteForceMax];
+    for (int i = 0; i < stride; i++)
+        acc[i] = 0;
+    int d = 0;
+    for (; d + 4 <= dim_; d += 4) {
+        const float *p0 = &by_dim_[(size_t)d * stride], *p1 = p0 + stride, *p2 = p1 + stride,
+                    *p3 = p2 + stride;
+        const float q0 = q[d], q1 = q[d + 1], q2 = q[d + 2], q3 = q[d + 3];
+        for (int i = 0; i < stride; i++) {
+            const float a0 = p0[i] - q0, a1 = p1[i] - q1, a2 = p2[i] - q2, a3 = p3[i] - q3;
+            acc[i] += a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3;
+        }
+    }
+    for (; d < dim_; d++) {
+        const float *p = &by_dim_[(size_t)d * stride], qd = q[d];
+        for (int i = 0; i < stride; i++) {
+            const float a = p[i] - qd;
+            acc[i] += a * a;
+        }
+    }
+    int best = 0;
+    for (int i = 1; i < n; i++)
+        if (acc[i] < acc[best])
+            best = i;
+    *index = best;
+    *dist2 = acc[best];
+}
+
 void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps) const
 {
+    if (!impl_) {
+        // Exact whatever eps asks: the comparison of all pairs is the
+        // cheapest search there is at this size.
+        for (int q = 0; q < nq; q++)
+            brute_force(queries + (size_t)q * dim_, index + q, dist2 + q);
+        return;
+    }
     flann::KNNSimpleResultSet<float> result(1);
     flann::SearchParams params(-1, eps);
     for (int q = 0; q < nq; q++) {
@@ -122,7 +181,8 @@ void NNIndex::search(const float *queries, int nq, int *index, float *dist2, flo
 size_t NNIndex::memory_bytes() const
 {
     // The tree's nodes are FLANN's; about two per leaf of 8 points.
-    return points_.capacity() * sizeof(float) + (n_ ? (size_t)n_ / 4 * 64 + 256 : 0);
+    return (points_.capacity() + by_dim_.capacity()) * sizeof(float) +
+           (impl_ ? (size_t)n_ / 4 * 64 + 256 : 0);
 }
 
 } // namespace ctrack

@@ -157,8 +157,103 @@ START_TEST(exact_search_equals_brute_force_on_real_crops)
 }
 END_TEST
 
-// Approximate search (eps = 1: a neighbour within twice the nearest
-// distance) stays within 0.05 of the exact DDIS on real crops.
+// The two searches of NNIndex, all pairs (a template's kPoints) and
+// FLANN's kd-tree, see the same distances to the bit: on random points they
+// choose the same neighbours; on real crops, where pixel values repeat, a
+// query's neighbours may differ only between points at the same distance.
+START_TEST(all_pairs_equals_the_kd_tree)
+{
+    auto compare = [](const float *p, const float *q, bool ties_allowed) {
+        Template pairs, tree;
+        pairs.build(p);
+        tree.build(p, true);
+        int pi[kPoints], ti[kPoints];
+        float pd[kPoints], td[kPoints];
+        pairs.index.search(q, kPoints, pi, pd);
+        tree.index.search(q, kPoints, ti, td);
+        int tied = 0;
+        for (int j = 0; j < kPoints; j++) {
+            ck_assert_msg(pd[j] == td[j], "query %d: all pairs %.9g, kd-tree %.9g", j,
+                          (double)pd[j], (double)td[j]);
+            if (pi[j] == ti[j])
+                continue;
+            ck_assert_msg(ties_allowed, "query %d: points %d and %d", j, pi[j], ti[j]);
+            // Both at the distance found: the kd-tree's choice is as near.
+            int i2[1];
+            float d2[1];
+            NNIndex one;
+            one.build(p + (size_t)ti[j] * kDescDim, 1, kDescDim);
+            one.search(q + (size_t)j * kDescDim, 1, i2, d2);
+            ck_assert_float_eq(d2[0], pd[j]);
+            ck_assert_int_lt(pi[j], ti[j]); // all pairs keeps the first of equals
+            tied++;
+        }
+        return tied;
+    };
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0, 255);
+    std::vector<float> p((size_t)kPoints * kDescDim), q(p.size());
+    for (int trial = 0; trial < 50; trial++) {
+        for (float &x : p)
+            x = u(rng);
+        for (float &x : q)
+            x = u(rng);
+        compare(p.data(), q.data(), false);
+    }
+    int tied = 0, pairs = 0;
+    for (const Crossing &c : load_crossings())
+        for (int a = 0; a < 4; a++)
+            for (int b = 0; b < 4; b++, pairs++)
+                tied += compare(c.desc[a].data(), c.desc[b].data(), true);
+    std::printf("all pairs against the kd-tree: %d queries of %d tied\n", tied,
+                pairs * kPoints);
+}
+END_TEST
+
+// Past kBruteForceMax points the index is FLANN's kd-tree, and exact.
+START_TEST(large_sets_use_the_kd_tree)
+{
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> u(0, 255);
+    const int n = NNIndex::kBruteForceMax * 3 + 5, dim = 7;
+    std::vector<float> p((size_t)n * dim), q((size_t)50 * dim);
+    for (float &x : p)
+        x = u(rng);
+    for (float &x : q)
+        x = u(rng);
+    NNIndex index;
+    index.build(p.data(), n, dim);
+    ck_assert_int_eq(index.size(), n);
+    std::vector<int> found(50);
+    std::vector<float> dist(50);
+    index.search(q.data(), 50, found.data(), dist.data());
+    for (int j = 0; j < 50; j++) {
+        float best = INFINITY;
+        int bi = -1;
+        for (int i = 0; i < n; i++) {
+            float d = 0;
+            for (int k = 0; k < dim; k++) {
+                const float t = q[j * dim + k] - p[i * dim + k];
+                d += t * t;
+            }
+            if (d < best) {
+                best = d;
+                bi = i;
+            }
+        }
+        ck_assert_int_eq(found[j], bi);
+        ck_assert_float_eq_tol(dist[j], best, 1e-3f * best);
+    }
+    // A copy searches alike.
+    NNIndex copy(index);
+    std::vector<int> again(50);
+    copy.search(q.data(), 50, again.data(), dist.data());
+    ck_assert(again == found);
+}
+END_TEST
+
+// Approximate search with the kd-tree (eps = 1: a neighbour within twice
+// the nearest distance) stays within 0.05 of the exact DDIS on real crops.
 START_TEST(approximate_search_within_tolerance)
 {
     Ddis d;
@@ -167,7 +262,7 @@ START_TEST(approximate_search_within_tolerance)
         for (int a = 0; a < 2; a++)
             for (int b = 0; b < 4; b++) {
                 Template t;
-                t.build(c.desc[a].data());
+                t.build(c.desc[a].data(), true);
                 double exact = d.ddis(t, c.desc[b].data());
                 double approx = d.ddis(t, c.desc[b].data(), 1.0f);
                 worst = std::max(worst, std::fabs(exact - approx));
@@ -255,6 +350,8 @@ int main(int argc, char **argv)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, exact_search_equals_brute_force_on_random_points);
     tcase_add_test(tc, exact_search_equals_brute_force_on_real_crops);
+    tcase_add_test(tc, all_pairs_equals_the_kd_tree);
+    tcase_add_test(tc, large_sets_use_the_kd_tree);
     tcase_add_test(tc, approximate_search_within_tolerance);
     tcase_add_test(tc, highest_for_the_same_patch);
     tcase_add_test(tc, ranks_the_right_person_after_a_crossing);

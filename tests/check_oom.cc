@@ -2,8 +2,8 @@
 // failed feed leaves the tracker as it was. operator new is replaced here to
 // fail on demand (the library is linked statically so it uses this one),
 // and so are malloc and its family: the executable's malloc interposes on
-// every shared library's, so OpenCV's allocations (cv::fastMalloc) and the
-// C library's fail on demand too. (Under AddressSanitizer or
+// every shared library's, so the C library's allocations fail on demand
+// too. (Under AddressSanitizer or
 // ThreadSanitizer, whose runtimes own malloc, only operator new fails.)
 #include <check.h>
 
@@ -40,8 +40,8 @@ static std::atomic<long> fail_countdown{-1};
 // While set, every allocation fails, in every thread.
 static std::atomic<bool> fail_all{false};
 static std::atomic<long> allocations{0};
-// Failed allocations that came through malloc and not operator new: the
-// C library's, OpenCV's.
+// Failed allocations that came through malloc and not operator new: the C
+// library's, FLANN's pool.
 static std::atomic<long> failed_mallocs{0};
 
 // Whether this allocation may go through.
@@ -205,7 +205,7 @@ END_TEST
 // The same with the frames: TUD-Campus's, pixels only (background model,
 // blobs, contour template) and with its public detections (mean shift,
 // appearance templates). Each frame is refused twice, at two different
-// allocations, before it goes through: what OpenCV and FLANN allocate, the
+// allocations, before it goes through: the mask operations' buffers, the
 // background model's update and the templates' rebuilding must all be
 // undone, so that the tracks and candidates stay those of an undisturbed
 // tracker, to the byte.
@@ -303,7 +303,9 @@ static void pixels_out_of_memory(int source, bool packed = false)
         assert_equal(candidates_of(t), candidates_of(ref));
     }
     ck_assert_int_gt(frames, 20);
-    ck_assert_int_gt(refused, frames);
+    // Most frames allocate nothing once the buffers have grown to the
+    // scene (docs/bench.md, "Memory"): the refusals are the growing ones.
+    ck_assert_int_gt(refused, 5);
 }
 
 START_TEST(pixels_only_out_of_memory_changes_nothing)
@@ -328,7 +330,7 @@ END_TEST
 // The first kEveryAllocationSteps steps of TUD-Campus, in each mode: each
 // step is fed once with every allocation failing (in every thread), then
 // once for each allocation it makes with that one failing (the first, the
-// second, ...: OpenCV's, FLANN's, the C library's and ctrack's alike), each
+// second, ...: the C library's and ctrack's alike), each
 // refused with CT_ERROR_OUT_OF_MEMORY and changing nothing, and then goes
 // through and must give what a tracker that never saw a failed call gives;
 // the rest of the sequence follows, compared step by step. 40 steps (1.6 s
@@ -427,9 +429,9 @@ static void every_allocation_fails(Mode mode)
                 : mode == DETECTIONS ? "detections only" : "detections + pixels",
                 refused, kEveryAllocationSteps, most, failed_mallocs - mallocs_before);
 #if INTERPOSE_MALLOC
-    // With pixels, OpenCV's own allocations were among those that failed.
-    if (mode != DETECTIONS)
-        ck_assert_int_gt(failed_mallocs - mallocs_before, 0);
+    // Allocations through malloc itself were among those that failed: the
+    // interposition reaches them.
+    ck_assert_int_gt(failed_mallocs - mallocs_before, 0);
 #endif
 }
 

@@ -1,0 +1,187 @@
+#include "regions.h"
+
+#include <algorithm>
+
+namespace ctrack {
+
+namespace {
+
+// dst[x] = max (or min) of src[x - 1], src[x], src[x + 1] for x in [0, n),
+// where src[-1] and src[n] exist when has_left and has_right, else count as
+// neither.
+template <bool Max>
+void across3(const uint8_t *src, uint8_t *dst, int n, bool has_left, bool has_right,
+             uint8_t outside_left, uint8_t outside_right)
+{
+    auto op = [](uint8_t a, uint8_t b) { return Max ? std::max(a, b) : std::min(a, b); };
+    const uint8_t left = has_left ? src[-1] : outside_left;
+    const uint8_t right = has_right ? src[n] : outside_right;
+    if (n == 1) {
+        dst[0] = op(op(left, src[0]), right);
+        return;
+    }
+    dst[0] = op(op(left, src[0]), src[1]);
+    for (int x = 1; x < n - 1; x++)
+        dst[x] = op(op(src[x - 1], src[x]), src[x + 1]);
+    dst[n - 1] = op(op(src[n - 2], src[n - 1]), right);
+}
+
+} // namespace
+
+void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &area)
+{
+    static_assert(kCloseWidth == 3, "across3 is the horizontal pass");
+    constexpr int kHalf = kCloseHeight / 2;
+    const int x0 = area.x0, y0 = area.y0, aw = area.x1 - area.x0, ah = area.y1 - area.y0;
+    if (aw <= 0 || ah <= 0)
+        return;
+    a_.resize((size_t)aw * ah);
+    b_.resize((size_t)aw * ah);
+    // Dilation across: a pixel beyond the image's edge counts as neither,
+    // one beyond the area's is the input's.
+    for (int y = 0; y < ah; y++)
+        across3<true>(in + (size_t)(y0 + y) * w + x0, &a_[(size_t)y * aw], aw, x0 > 0,
+                      area.x1 < w, 0, 0);
+    // Dilation down: rows outside the area are 0 after the dilation across
+    // (the input's margin), so the area's rows are all there is.
+    for (int y = 0; y < ah; y++) {
+        uint8_t *d = &b_[(size_t)y * aw];
+        const int lo = std::max(0, y - kHalf), hi = std::min(ah - 1, y + kHalf);
+        std::copy(&a_[(size_t)lo * aw], &a_[(size_t)lo * aw] + aw, d);
+        for (int r = lo + 1; r <= hi; r++) {
+            const uint8_t *s = &a_[(size_t)r * aw];
+            for (int x = 0; x < aw; x++)
+                d[x] = std::max(d[x], s[x]);
+        }
+    }
+    // Erosion across: beyond the image's edge counts as neither (255),
+    // beyond the area's the dilation is 0.
+    for (int y = 0; y < ah; y++)
+        across3<false>(&b_[(size_t)y * aw], &a_[(size_t)y * aw], aw, false, false,
+                       x0 > 0 ? 0 : 255, area.x1 < w ? 0 : 255);
+    // Erosion down: likewise, a row beyond the image's edge counts as
+    // neither, one beyond the area's is 0.
+    for (int y = 0; y < ah; y++) {
+        uint8_t *d = out + (size_t)(y0 + y) * w + x0;
+        if (std::max(0, y0 + y - kHalf) < y0 || std::min(h - 1, y0 + y + kHalf) >= y0 + ah) {
+            std::fill(d, d + aw, 0);
+            continue;
+        }
+        const int lo = std::max(0, y - kHalf), hi = std::min(ah - 1, y + kHalf);
+        std::copy(&a_[(size_t)lo * aw], &a_[(size_t)lo * aw] + aw, d);
+        for (int r = lo + 1; r <= hi; r++) {
+            const uint8_t *s = &a_[(size_t)r * aw];
+            for (int x = 0; x < aw; x++)
+                d[x] = std::min(d[x], s[x]);
+        }
+    }
+}
+
+int OuterRegions::root(std::vector<Run> &runs, int i)
+{
+    int r = i;
+    while (runs[r].up != r)
+        r = runs[r].up;
+    while (runs[i].up != r) {
+        const int next = runs[i].up;
+        runs[i].up = r;
+        i = next;
+    }
+    return r;
+}
+
+void OuterRegions::join(std::vector<Run> &runs, int a, int b)
+{
+    a = root(runs, a);
+    b = root(runs, b);
+    // The first run in raster order is the root.
+    if (a < b)
+        runs[b].up = a;
+    else if (b < a)
+        runs[a].up = b;
+}
+
+void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, std::vector<Rect> &out)
+{
+    out.clear();
+    fg_.clear();
+    bg_.clear();
+    fg_row_.clear();
+    bg_row_.clear();
+    const int ah = area.y1 - area.y0;
+    if (area.x1 <= area.x0 || ah <= 0)
+        return;
+    // Background run 0 stands for everything around the area.
+    bg_.push_back(Run{0, 0, -1, 0, -1});
+    for (int y = area.y0; y < area.y1; y++) {
+        const uint8_t *row = mask + (size_t)y * stride;
+        const int fg_first = (int)fg_.size(), bg_first = (int)bg_.size();
+        fg_row_.push_back(fg_first);
+        bg_row_.push_back(bg_first);
+        const bool edge_row = y == area.y0 || y == area.y1 - 1;
+        int x = area.x0;
+        while (x < area.x1) {
+            int e = x;
+            if (row[x]) {
+                while (e < area.x1 && row[e])
+                    e++;
+                const int left = e == x || x == area.x0 ? -1 : (int)bg_.size() - 1;
+                fg_.push_back(Run{x, e, y, (int)fg_.size(), left});
+            } else {
+                while (e < area.x1 && !row[e])
+                    e++;
+                const int i = (int)bg_.size();
+                bg_.push_back(Run{x, e, y, i, -1});
+                if (edge_row || x == area.x0 || e == area.x1)
+                    join(bg_, 0, i);
+            }
+            x = e;
+        }
+        if (y == area.y0)
+            continue;
+        // Joined to the previous row's runs: foreground through the 8
+        // neighbours (runs that touch at a corner), background through the
+        // 4 (runs that share a column).
+        const int pf = fg_row_[fg_row_.size() - 2], pb = bg_row_[bg_row_.size() - 2];
+        for (int i = fg_first, j = pf; i < (int)fg_.size() && j < fg_first;) {
+            if (fg_[i].x0 <= fg_[j].x1 && fg_[j].x0 <= fg_[i].x1)
+                join(fg_, i, j);
+            if (fg_[i].x1 < fg_[j].x1)
+                i++;
+            else
+                j++;
+        }
+        for (int i = bg_first, j = pb; i < (int)bg_.size() && j < bg_first;) {
+            if (bg_[i].x0 < bg_[j].x1 && bg_[j].x0 < bg_[i].x1)
+                join(bg_, i, j);
+            if (bg_[i].x1 < bg_[j].x1)
+                i++;
+            else
+                j++;
+        }
+    }
+    // Each region's box; its root is its first run, whose left neighbour
+    // lies in the background around it (no hole of the region itself is on
+    // the region's first row): a region is outer when that background is
+    // the area's surroundings.
+    box_of_.assign(fg_.size(), -1);
+    boxes_.clear();
+    for (int i = 0; i < (int)fg_.size(); i++) {
+        const int r = root(fg_, i);
+        const Run &run = fg_[i];
+        if (r == i) {
+            box_of_[i] = (int)boxes_.size();
+            boxes_.push_back(Rect{run.x0, run.y, run.x1, run.y + 1});
+            continue;
+        }
+        Rect &b = boxes_[(size_t)box_of_[r]];
+        b.x0 = std::min(b.x0, run.x0);
+        b.x1 = std::max(b.x1, run.x1);
+        b.y1 = std::max(b.y1, run.y + 1);
+    }
+    for (int i = (int)fg_.size() - 1; i >= 0; i--)
+        if (box_of_[i] >= 0 && (fg_[i].left < 0 || root(bg_, fg_[i].left) == 0))
+            out.push_back(boxes_[(size_t)box_of_[i]]);
+}
+
+} // namespace ctrack
