@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "nnindex.h"
 #include "planes.h"
 
@@ -28,7 +30,7 @@ void describe(const Planes &img, double left, double top, double width, double h
 // One template: the descriptors of a box and the index that finds their
 // nearest neighbours (no tree at kPoints: see NNIndex::kBruteForceMax).
 struct Template {
-    std::vector<float> desc;
+    Vec<float> desc;
     NNIndex index;
     // With tree, a FLANN kd-tree indexes them however few (for comparisons).
     void build(const float *descriptors, bool tree = false);

@@ -6,7 +6,7 @@ namespace ctrack {
 
 namespace {
 
-int find_root(std::vector<int> &parent, int x)
+int find_root(Vec<int> &parent, int x)
 {
     while (parent[x] != x) {
         parent[x] = parent[parent[x]];
@@ -17,8 +17,8 @@ int find_root(std::vector<int> &parent, int x)
 
 } // namespace
 
-void Assigner::solve(int n, int m, const std::vector<Pair> &pairs, double limit,
-                     std::vector<int> &row_to_col)
+void Assigner::solve(int n, int m, const Vec<Pair> &pairs, double limit,
+                     Vec<int> &row_to_col)
 {
     row_to_col.assign((size_t)n, -1);
     if (n == 0 || m == 0 || pairs.empty())

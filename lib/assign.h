@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "memory.h"
+
 namespace ctrack {
 
 // An allowed pair and its cost (below the problem's limit).
@@ -33,8 +35,8 @@ class Assigner {
 public:
     static constexpr int kExactNodes = 64;
 
-    void solve(int n, int m, const std::vector<Pair> &pairs, double limit,
-               std::vector<int> &row_to_col);
+    void solve(int n, int m, const Vec<Pair> &pairs, double limit,
+               Vec<int> &row_to_col);
     // Heap bytes held by the buffers.
     size_t memory_bytes() const;
 
@@ -43,13 +45,13 @@ private:
     void solve_greedy(size_t first, size_t last);
 
     int n_ = 0;
-    std::vector<int> parent_, comp_, comp_rows_, comp_cols_, local_;
-    std::vector<size_t> comp_start_;
-    std::vector<Pair> by_comp_;
-    std::vector<double> sub_, u_, v_, minv_;
-    std::vector<int> p_, way_;
-    std::vector<char> used_;
-    std::vector<int> *out_ = nullptr;
+    Vec<int> parent_, comp_, comp_rows_, comp_cols_, local_;
+    Vec<size_t> comp_start_;
+    Vec<Pair> by_comp_;
+    Vec<double> sub_, u_, v_, minv_;
+    Vec<int> p_, way_;
+    Vec<char> used_;
+    Vec<int> *out_ = nullptr;
 };
 
 } // namespace ctrack

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "dsp.h"
 #include "mask.h"
 #include "planes.h"
@@ -94,7 +96,7 @@ private:
     int64_t start_us_ = 0, last_us_ = 0;
     // Means and variances (Sigma-Delta: M moves one level a frame toward
     // the image, V toward N times |I - M|).
-    std::vector<uint8_t> my_, vy_, mu_, mv_;
+    Vec<uint8_t> my_, vy_, mu_, mv_;
     // The model before the last apply(), while kept_: apply() reads it and
     // writes the new one into the buffers above (double buffering: no copy).
     struct Dims {
@@ -105,11 +107,11 @@ private:
         NoiseLevel noise;
         double gain;
     } old_dims_{};
-    std::vector<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     bool kept_ = false;
-    std::vector<uint8_t> mask_, frozen_;
-    std::vector<uint8_t> line_y_, line_u_, line_v_; // one row's samples
-    std::vector<uint8_t> line_vmax_;                // kVMax, a row of it
+    Vec<uint8_t> mask_, frozen_;
+    Vec<uint8_t> line_y_, line_u_, line_v_; // one row's samples
+    Vec<uint8_t> line_vmax_;                // kVMax, a row of it
 };
 
 } // namespace ctrack

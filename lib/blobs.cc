@@ -102,14 +102,14 @@ int count_nonzero(const uint8_t *p, int n)
 
 struct BlobFinder::Impl {
     // The cleaned mask, whole (w x h); outside `area` it is 0.
-    std::vector<uint8_t> clean;
+    Vec<uint8_t> clean;
     int w = 0, h = 0;
     Rect area{0, 0, 0, 0};
     Closing closing;
     OuterRegions regions;
-    std::vector<Rect> blobs;
-    std::vector<int> columns, centres, tops;
-    std::vector<float> votes;
+    Vec<Rect> blobs;
+    Vec<int> columns, centres, tops;
+    Vec<float> votes;
     const uint8_t *at(int x, int y) const { return &clean[(size_t)y * w + x]; }
     // Foreground pixels of column x in rows [y0, y1).
     int column_count(int x, int y0, int y1) const
@@ -121,7 +121,7 @@ struct BlobFinder::Impl {
     }
 };
 
-BlobFinder::BlobFinder() : impl_(new Impl) {}
+BlobFinder::BlobFinder() : impl_(make_owned<Impl>()) {}
 BlobFinder::~BlobFinder() = default;
 
 const uint8_t *BlobFinder::cleaned() const
@@ -200,7 +200,7 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
     Impl &m = *impl_;
     const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
     // The top edge: each column's first foreground row (r.y1 if none).
-    std::vector<int> &top = m.tops;
+    Vec<int> &top = m.tops;
     top.assign(bw, r.y1);
     for (int x = r.x0; x < r.x1; x++)
         for (int y = r.y0; y < r.y1; y++)
@@ -247,7 +247,7 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-                      const PersonSize &size, Classifier &cls, std::vector<Rect> &out)
+                      const PersonSize &size, Classifier &cls, Vec<Rect> &out)
 {
     Impl &m = *impl_;
     out.clear();
@@ -259,7 +259,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     // A mask more than kMaxForeground foreground is no picture of people (a
     // light switched, the camera moved, noise the model has not learnt):
     // nothing in it is a candidate.
-    std::vector<Rect> &b = m.blobs;
+    Vec<Rect> &b = m.blobs;
     b.clear();
     if (m.area.x1 > m.area.x0) {
         long fg = 0;
@@ -289,7 +289,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
     // the background) lie one above the other: merge them while the union
     // still has a person's shape.
     // Each blob's vote, computed when first needed (NaN: not yet).
-    std::vector<float> &votes = m.votes;
+    Vec<float> &votes = m.votes;
     votes.assign(b.size(), NAN);
     auto vote_of = [&](size_t k) {
         if (std::isnan(votes[k]))
@@ -351,7 +351,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         const int parts = (int)std::lround(bw / person_w);
         // The predicted centres of the tracks inside, those closer than
         // kMinCentreGap heights to the one before counted once.
-        std::vector<int> &centres = m.centres;
+        Vec<int> &centres = m.centres;
         centres.clear();
         for (int k = 0; k < n_predicted; k++) {
             const Rect &p = predicted[k];
@@ -395,7 +395,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         // equal cut; in a narrower one, between two heads on its top edge
         // when the contour template agrees (people who came in together,
         // whom no track told apart).
-        std::vector<int> &cuts = m.columns;
+        Vec<int> &cuts = m.columns;
         cuts.clear();
         cuts.push_back(r.x0);
         if (head_cut >= 0) {

@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "memory.h"
+
 #include "classifier.h"
 #include "mask.h"
 #include "person_size.h"
@@ -30,7 +32,7 @@ public:
     // (frame pixels, at the background model's scale from the mask); `cls`
     // votes where a merge or a split is in doubt.
     void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-              const PersonSize &size, Classifier &cls, std::vector<Rect> &out);
+              const PersonSize &size, Classifier &cls, Vec<Rect> &out);
     // The last find()'s cuts: blobs past the cap (the smallest), and whether
     // the mask was so full of foreground that it gave none.
     int dropped() const { return dropped_; }
@@ -56,8 +58,8 @@ private:
     // and scores them above the whole: the column, or -1.
     int between_heads(const Rect &r, Classifier &cls);
     struct Impl;
-    std::unique_ptr<Impl> impl_;
-    std::vector<char> whole_;
+    Owned<Impl> impl_;
+    Vec<char> whole_;
     int dropped_ = 0;
     bool flooded_ = false;
 };

@@ -44,7 +44,7 @@ size_t PixelCandidates::memory_bytes() const
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
-                                        const std::vector<Track> &tracks)
+                                        const Vec<Track> &tracks)
 {
     frozen_.clear();
     predicted_.clear();
@@ -76,7 +76,7 @@ static bool person_sized(const ct_candidate &c, const PersonSize &size)
     return c.height >= kLow * tall && c.height <= kHigh * tall;
 }
 
-void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                            int test, const PersonSize &size, uint64_t *stage_ns)
 {
     dets_.clear();
@@ -115,7 +115,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const std::vector<Tr
     stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
 }
 
-void PixelCandidates::verify(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                              const ct_detection *dets, size_t n, uint64_t *stage_ns)
 {
     Stopwatch sw;

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "background.h"
 #include "blobs.h"
 #include "classifier.h"
@@ -26,20 +28,20 @@ public:
     // background under them, and tracks inside a blob split it. The time
     // of each stage goes to stage_ns.
     // `test` is a ct_pedestrian_test: what scores each candidate.
-    void find(int64_t t_us, const Planes &img, const std::vector<Track> &tracks, int test,
+    void find(int64_t t_us, const Planes &img, const Vec<Track> &tracks, int test,
               const PersonSize &size, uint64_t *stage_ns);
     // The vote on the foreground inside each of the n detections: one
     // candidate each, in order, and dets() the detections with the score of
     // those the vote rejects multiplied by the vote's.
-    void verify(int64_t t_us, const Planes &img, const std::vector<Track> &tracks,
+    void verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                 const ct_detection *dets, size_t n, uint64_t *stage_ns);
 
-    const std::vector<ct_detection> &dets() const { return dets_; }
+    const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.
     bool whole(size_t i) const { return whole_[i] != 0; }
-    const std::vector<ct_candidate> &candidates() const { return candidates_; }
-    std::vector<ct_candidate> &candidates() { return candidates_; }
+    const Vec<ct_candidate> &candidates() const { return candidates_; }
+    Vec<ct_candidate> &candidates() { return candidates_; }
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale
@@ -58,16 +60,16 @@ public:
 
 private:
     // The background model over this frame (tracks that moved are frozen).
-    void update_background(int64_t t_us, const Planes &img, const std::vector<Track> &tracks);
+    void update_background(int64_t t_us, const Planes &img, const Vec<Track> &tracks);
 
     Background background_;
     BlobFinder blobs_;
     Classifier classifier_;
     bool have_mask_ = false; // this step
-    std::vector<Rect> frozen_, predicted_, blob_rects_;
-    std::vector<ct_detection> dets_;
-    std::vector<char> whole_;
-    std::vector<ct_candidate> candidates_;
+    Vec<Rect> frozen_, predicted_, blob_rects_;
+    Vec<ct_detection> dets_;
+    Vec<char> whole_;
+    Vec<ct_candidate> candidates_;
 };
 
 } // namespace ctrack

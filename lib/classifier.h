@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "memory.h"
 #include "ctrack/ctrack.h"
 #include "mask.h"
 #include "shape.h"
@@ -111,7 +112,7 @@ private:
         Vote vote;
     };
     Shape shape_;
-    std::vector<Memo> memo_;
+    Vec<Memo> memo_;
 };
 
 // Whether the vote rejects a candidate: enough regions voted and no

@@ -88,7 +88,7 @@ void block_means(const int16_t *__restrict a, const int16_t *__restrict b, int w
 
 } // namespace
 
-Planes packed_to_i420(const ct_frame &f, const Dsp &dsp, std::vector<int16_t> *buf)
+Planes packed_to_i420(const ct_frame &f, const Dsp &dsp, Vec<int16_t> *buf)
 {
     const int w = f.width, h = f.height, cw = (w + 1) / 2, ch = (h + 1) / 2;
     // The planes' bytes, then two rows of each pixel's chroma (U and V for

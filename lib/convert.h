@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "ctrack/ctrack.h"
 #include "dsp.h"
 #include "planes.h"
@@ -15,7 +17,7 @@ namespace ctrack {
 // A loaded BGR24 or RGB24 frame converted to I420 planes in buf (resized to
 // fit, and working rows after them; the planes point into it), its rows by
 // dsp's kernels.
-Planes packed_to_i420(const ct_frame &f, const Dsp &dsp, std::vector<int16_t> *buf);
+Planes packed_to_i420(const ct_frame &f, const Dsp &dsp, Vec<int16_t> *buf);
 
 // The conversion's entries of the table: the fastest build the flags allow.
 void convert_dsp_init(Dsp *dsp, unsigned flags);

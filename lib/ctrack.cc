@@ -23,10 +23,17 @@
 #define CT_STR(x) CT_STR2(x)
 
 struct ct_tracker {
-    explicit ct_tracker(const ct_config &cfg) : engine(cfg), source(cfg.source)
+    ct_tracker(const ct_config &cfg, const ctrack::Memory &m)
+        : memory(m), construction(&memory), engine(cfg), source(cfg.source)
     {
         ctrack::dsp_init(&dsp, ctrack::cpu_flags());
+        construction.end();
     }
+    // The host's allocator (or none): first, so that it outlives every
+    // container that allocates from it.
+    const ctrack::Memory memory;
+    // The members below are made with it.
+    ctrack::MemoryScope construction;
     ctrack::Engine engine;
     int source;
     // The pixel kernels for this CPU, chosen when the tracker is made.
@@ -35,7 +42,7 @@ struct ct_tracker {
     // A packed colour frame's planes, made by the library (CT_FORMAT_BGR24,
     // CT_FORMAT_RGB24): kept from one feed to the next, so that a steady
     // stream of frames allocates nothing.
-    std::vector<int16_t> converted;
+    ctrack::Vec<int16_t> converted;
     // The message of the last failed call. A fixed buffer: reporting an
     // error never allocates.
     mutable char error[512] = {0};
@@ -70,7 +77,7 @@ void clear_error(const ct_tracker *t)
 // gets the fields it has, a larger element's tail is zeroed), or reports the
 // count needed.
 template <typename T>
-int copy_out(const ct_tracker *tracker, const std::vector<T> &items, const char *what,
+int copy_out(const ct_tracker *tracker, const ctrack::Vec<T> &items, const char *what,
              size_t min_size, void *out, size_t capacity, size_t elem_size, size_t *count)
 {
     char *msg = tracker->error;
@@ -161,22 +168,51 @@ int ct_frame_default(ct_frame *frame, size_t size)
 
 int ct_tracker_create(const ct_config *cfg, ct_tracker **out)
 {
+    return ct_tracker_create_with_allocator(cfg, nullptr, out);
+}
+
+int ct_tracker_create_with_allocator(const ct_config *cfg, const ct_allocator *allocator,
+                                     ct_tracker **out)
+{
     if (!out)
         return CT_ERROR_INVALID_ARGUMENT;
     *out = nullptr;
+    ctrack::Memory m;
+    if (allocator) {
+        // The first published ct_allocator (0.9.0) is the whole struct.
+        if (allocator->size < sizeof(ct_allocator) || allocator->size > ctrack::kMaxStructSize ||
+            !allocator->alloc || !allocator->free)
+            return CT_ERROR_INVALID_ARGUMENT;
+        m.alloc = allocator->alloc;
+        m.free = allocator->free;
+        m.opaque = allocator->opaque;
+    }
     ct_config c;
     int st = ctrack::load_config(cfg, &c, nullptr, 0);
     if (st != CT_OK)
         return st;
     return guarded(nullptr, [&] {
-        *out = new ct_tracker(c);
+        void *p = ctrack::allocate(&m, sizeof(ct_tracker));
+        try {
+            *out = new (p) ct_tracker(c, m);
+        } catch (...) {
+            ctrack::release(&m, p);
+            throw;
+        }
         return CT_OK;
     });
 }
 
 void ct_tracker_destroy(ct_tracker *tracker)
 {
-    delete tracker;
+    if (!tracker)
+        return;
+    const ctrack::Memory m = tracker->memory;
+    {
+        ctrack::MemoryScope scope(&tracker->memory);
+        tracker->~ct_tracker();
+    }
+    ctrack::release(&m, tracker);
 }
 
 int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
@@ -207,6 +243,8 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
                             (long long)f.timestamp_us, (long long)e.last_time());
     const uint64_t validate_ns = sw.lap();
     uint64_t convert_ns = 0;
+    // Whatever the step makes allocates from the tracker's Memory.
+    ctrack::MemoryScope scope(&tracker->memory);
     st = guarded(tracker, [&] {
         ctrack::Planes planes;
         if (ctrack::packed_rgb(f.format)) {
@@ -340,8 +378,11 @@ int ct_tracker_reset(ct_tracker *tracker)
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
     clear_error(tracker);
-    tracker->engine.reset();
-    return CT_OK;
+    ctrack::MemoryScope scope(&tracker->memory);
+    return guarded(tracker, [&] {
+        tracker->engine.reset();
+        return CT_OK;
+    });
 }
 
 const char *ct_tracker_last_error(const ct_tracker *tracker)

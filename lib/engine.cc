@@ -114,7 +114,7 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
     tracks_.push_back(t);
 }
 
-void Engine::match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
                    const ct_detection *dets, double min_iou)
 {
     const int n = (int)track_idx.size(), m = (int)det_idx.size();

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "ctrack/ctrack.h"
 #include "assign.h"
 #include "candidates.h"
@@ -35,8 +37,8 @@ public:
               size_t n);
     void reset();
 
-    const std::vector<ct_track> &reported() const { return reported_; }
-    const std::vector<ct_candidate> &candidates() const { return pixels_.candidates(); }
+    const Vec<ct_track> &reported() const { return reported_; }
+    const Vec<ct_candidate> &candidates() const { return pixels_.candidates(); }
     size_t live_tracks() const { return tracks_.size(); }
     uint64_t mean_shift_runs() const { return ms_runs_; }
     uint64_t ddis_runs() const { return bank_.ddis_runs; }
@@ -73,7 +75,7 @@ private:
     // Matches tracks_[track_idx] to dets[det_idx] by IoU with the gate
     // min_iou (and appearance, when on), updates the matched tracks, and
     // leaves only the unmatched in both lists.
-    void match(std::vector<int> &track_idx, std::vector<int> &det_idx,
+    void match(Vec<int> &track_idx, Vec<int> &det_idx,
                const ct_detection *dets, double min_iou);
     void update(Track &t, const ct_detection &d, int index, int64_t t_us);
     void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
@@ -95,8 +97,8 @@ private:
     uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
     uint64_t ms_runs_ = 0;
     ct_config cfg_;
-    std::vector<Track> tracks_;
-    std::vector<ct_track> reported_;
+    Vec<Track> tracks_;
+    Vec<ct_track> reported_;
     uint64_t next_id_ = 1;
     int64_t last_us_ = 0;
     bool has_time_ = false;
@@ -104,9 +106,9 @@ private:
     // The state before the step in progress, restored if it throws (the
     // restoring copy fits in capacity the vectors already have, so it cannot
     // throw). Kept as members so that steady state does not allocate.
-    std::vector<Track> saved_tracks_;
-    std::vector<ct_track> saved_reported_;
-    std::vector<ct_candidate> saved_candidates_;
+    Vec<Track> saved_tracks_;
+    Vec<ct_track> saved_reported_;
+    Vec<ct_candidate> saved_candidates_;
     PersonSize saved_size_;
 
     MeanShift ms_;
@@ -120,11 +122,11 @@ private:
 
     // Association's scratch, reused from step to step.
     Gate gate_;
-    std::vector<Pair> pairs_;
-    std::vector<int> row_pairs_, col_pairs_; // pairs per row and column in match()
+    Vec<Pair> pairs_;
+    Vec<int> row_pairs_, col_pairs_; // pairs per row and column in match()
     Assigner assigner_;
-    std::vector<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
-    std::vector<char> det_used_;
+    Vec<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
+    Vec<char> det_used_;
 };
 
 } // namespace ctrack

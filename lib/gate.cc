@@ -5,7 +5,7 @@
 
 namespace ctrack {
 
-void Gate::index(const ct_detection *dets, const std::vector<int> &cols)
+void Gate::index(const ct_detection *dets, const Vec<int> &cols)
 {
     dets_ = dets;
     cols_ = &cols;
@@ -31,7 +31,7 @@ void Gate::range(double lo, double hi, size_t *first, size_t *last) const
     *last = (size_t)(std::lower_bound(left_.begin(), left_.end(), hi) - left_.begin());
 }
 
-void Gate::keep_best(std::vector<Pair> &out)
+void Gate::keep_best(Vec<Pair> &out)
 {
     if (row_.size() > (size_t)kMaxPairsPerTrack) {
         std::nth_element(row_.begin(), row_.begin() + kMaxPairsPerTrack, row_.end(),
@@ -44,7 +44,7 @@ void Gate::keep_best(std::vector<Pair> &out)
     out.insert(out.end(), row_.begin(), row_.end());
 }
 
-void Gate::overlapping(int row, const Box &box, double min_iou, std::vector<Pair> &out)
+void Gate::overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out)
 {
     row_.clear();
     // A detection overlaps the box only if its left edge lies in
@@ -60,7 +60,7 @@ void Gate::overlapping(int row, const Box &box, double min_iou, std::vector<Pair
     keep_best(out);
 }
 
-void Gate::near(int row, double cx, double cy, double reach, double h, std::vector<Pair> &out)
+void Gate::near(int row, double cx, double cy, double reach, double h, Vec<Pair> &out)
 {
     row_.clear();
     size_t first, last;

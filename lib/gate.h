@@ -9,6 +9,8 @@
 
 #include <vector>
 
+#include "memory.h"
+
 #include "ctrack/ctrack.h"
 #include "assign.h"
 #include "track.h"
@@ -24,16 +26,16 @@ public:
     // Indexes the detections dets[cols[k]] for the queries that follow;
     // pairs name them by their position k in cols. cols must outlive the
     // queries.
-    void index(const ct_detection *dets, const std::vector<int> &cols);
+    void index(const ct_detection *dets, const Vec<int> &cols);
     // Appends (row, k, 1 - IoU) for the indexed detections whose IoU with
     // `box` reaches min_iou (an IoU within 1e-12 of it counts), the
     // kMaxPairsPerTrack highest when more do (ties: the lower k).
-    void overlapping(int row, const Box &box, double min_iou, std::vector<Pair> &out);
+    void overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out);
     // Appends (row, k, distance) for the indexed detections whose centre
     // lies within `reach` of (cx, cy) and whose height is within (0.67, 1.5)
     // times h, the kMaxPairsPerTrack nearest when more do (ties: the lower
     // k).
-    void near(int row, double cx, double cy, double reach, double h, std::vector<Pair> &out);
+    void near(int row, double cx, double cy, double reach, double h, Vec<Pair> &out);
     size_t memory_bytes() const;
 
 private:
@@ -41,14 +43,14 @@ private:
     void range(double lo, double hi, size_t *first, size_t *last) const;
     // Keeps the row's kMaxPairsPerTrack best (lowest cost) of row_ and
     // appends them to out in increasing k.
-    void keep_best(std::vector<Pair> &out);
+    void keep_best(Vec<Pair> &out);
 
     const ct_detection *dets_ = nullptr;
-    const std::vector<int> *cols_ = nullptr;
-    std::vector<int> order_;   // positions k by increasing left edge
-    std::vector<double> left_; // the left edges in that order
+    const Vec<int> *cols_ = nullptr;
+    Vec<int> order_;   // positions k by increasing left edge
+    Vec<double> left_; // the left edges in that order
     double max_width_ = 0;
-    std::vector<Pair> row_;
+    Vec<Pair> row_;
 };
 
 } // namespace ctrack

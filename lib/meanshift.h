@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "planes.h"
 
 namespace ctrack {
@@ -139,9 +141,9 @@ private:
                                    double h, ColorModel *m);
     void clear_hist();
 
-    std::vector<Sample> samples_; // the first n_samples_ are this window's
+    Vec<Sample> samples_; // the first n_samples_ are this window's
     size_t n_samples_ = 0;
-    std::vector<int32_t> columns_;
+    Vec<int32_t> columns_;
     uint32_t hist_[kHistBins] = {};
     uint16_t touched_[kHistBins];
     int n_touched_ = 0;

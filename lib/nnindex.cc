@@ -101,7 +101,7 @@ void NNIndex::build(const float *points, int n, int dim, bool force_tree)
     points_.assign(points, points + (size_t)n * dim);
     if (n > 0 && (force_tree || n > kBruteForceMax)) {
         by_dim_.clear();
-        impl_.reset(new Impl(points_.data(), n, dim));
+        impl_ = make_owned<Impl>(points_.data(), n, dim);
     } else {
         padded_ = (n + kLanes - 1) / kLanes * kLanes;
         by_dim_.assign((size_t)padded_ * dim, std::numeric_limits<float>::infinity());

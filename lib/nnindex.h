@@ -9,6 +9,8 @@
 #include <memory>
 #include <vector>
 
+#include "memory.h"
+
 namespace ctrack {
 
 class NNIndex {
@@ -45,13 +47,13 @@ public:
 
 private:
     struct Impl;
-    std::unique_ptr<Impl> impl_;
+    Owned<Impl> impl_;
     void brute_force(const float *query, int *index, float *dist2) const;
-    std::vector<float> points_;
+    Vec<float> points_;
     // Without the tree: the points by dimension (dim_ rows of n_ floats),
     // for comparing a query with all of them at once.
     static constexpr int kLanes = 8;
-    std::vector<float> by_dim_;
+    Vec<float> by_dim_;
     int padded_ = 0; // by_dim_'s row length
     int n_ = 0, dim_ = 0;
 };

@@ -77,7 +77,7 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
     }
 }
 
-int OuterRegions::root(std::vector<Run> &runs, int i)
+int OuterRegions::root(Vec<Run> &runs, int i)
 {
     int r = i;
     while (runs[r].up != r)
@@ -90,7 +90,7 @@ int OuterRegions::root(std::vector<Run> &runs, int i)
     return r;
 }
 
-void OuterRegions::join(std::vector<Run> &runs, int a, int b)
+void OuterRegions::join(Vec<Run> &runs, int a, int b)
 {
     a = root(runs, a);
     b = root(runs, b);
@@ -101,7 +101,7 @@ void OuterRegions::join(std::vector<Run> &runs, int a, int b)
         runs[a].up = b;
 }
 
-void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, std::vector<Rect> &out)
+void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, Vec<Rect> &out)
 {
     out.clear();
     fg_.clear();

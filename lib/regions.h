@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "mask.h"
 
 namespace ctrack {
@@ -31,7 +33,7 @@ public:
     size_t memory_bytes() const { return a_.capacity() + b_.capacity(); }
 
 private:
-    std::vector<uint8_t> a_, b_; // the area's rows, between the passes
+    Vec<uint8_t> a_, b_; // the area's rows, between the passes
 };
 
 // The bounding boxes of the outer regions of the mask inside `area`:
@@ -43,7 +45,7 @@ private:
 // pixel, in the mask's coordinates.
 class OuterRegions {
 public:
-    void find(const uint8_t *mask, int stride, const Rect &area, std::vector<Rect> &out);
+    void find(const uint8_t *mask, int stride, const Rect &area, Vec<Rect> &out);
     size_t memory_bytes() const
     {
         return (fg_.capacity() + bg_.capacity()) * sizeof(Run) +
@@ -59,12 +61,12 @@ private:
     struct Run {
         int x0, x1, y, up, left;
     };
-    int root(std::vector<Run> &runs, int i);
-    void join(std::vector<Run> &runs, int a, int b);
-    std::vector<Run> fg_, bg_;
-    std::vector<int> fg_row_, bg_row_; // each row's first run, then the end
-    std::vector<int> box_of_;          // per root foreground run: its box
-    std::vector<Rect> boxes_;
+    int root(Vec<Run> &runs, int i);
+    void join(Vec<Run> &runs, int a, int b);
+    Vec<Run> fg_, bg_;
+    Vec<int> fg_row_, bg_row_; // each row's first run, then the end
+    Vec<int> box_of_;          // per root foreground run: its box
+    Vec<Rect> boxes_;
 };
 
 } // namespace ctrack

@@ -66,7 +66,7 @@ void mark_cells(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         for (int x = 0; x < w; x++)
             c[(size_t)y * w + x] = row[x] ? kForeground : kHole;
     }
-    std::vector<int> &todo = s->todo;
+    Vec<int> &todo = s->todo;
     todo.clear();
     auto reach = [&](int x, int y) {
         const size_t i = (size_t)y * w + x;

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 namespace ctrack {
 
 // A shape is its outer profile in its bounding box: for each of kRows rows,
@@ -46,8 +48,8 @@ struct Shape {
     // shape_of()'s working memory, kept so that a Shape used again makes
     // no allocation: the box's pixels (foreground, background reached from
     // the box's border, or hole) and the flood fill's queue.
-    std::vector<uint8_t> cells;
-    std::vector<int> todo;
+    Vec<uint8_t> cells;
+    Vec<int> todo;
 };
 
 // The shape of the foreground (non-zero) pixels of mask inside the box

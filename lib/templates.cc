@@ -42,12 +42,12 @@ double TemplateBank::similarity(const Track &t, int det)
     return ddis_.ddis(templates_[(size_t)t.tmpl], descriptors(det));
 }
 
-void TemplateBank::learn(std::vector<Track> &tracks, const std::vector<Track> &saved,
+void TemplateBank::learn(Vec<Track> &tracks, const Vec<Track> &saved,
                          int64_t t_us)
 {
     slot_used_.assign(templates_.size(), 0);
-    const std::vector<Track> *const both[] = {&tracks, &saved};
-    for (const std::vector<Track> *v : both)
+    const Vec<Track> *const both[] = {&tracks, &saved};
+    for (const Vec<Track> *v : both)
         for (const Track &t : *v)
             if (t.tmpl >= 0)
                 slot_used_[t.tmpl] = 1;

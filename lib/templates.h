@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "appearance.h"
 #include "planes.h"
 #include "track.h"
@@ -29,7 +31,7 @@ public:
     // (the tracks as they were before the step, which a failed step
     // restores), and only then does the track take it: a failed step leaves
     // every restored track's template untouched.
-    void learn(std::vector<Track> &tracks, const std::vector<Track> &saved, int64_t t_us);
+    void learn(Vec<Track> &tracks, const Vec<Track> &saved, int64_t t_us);
     size_t memory_bytes() const;
 
     // DDIS evaluations and template builds, for ct_stats.
@@ -39,12 +41,12 @@ private:
     // Detection det's descriptors, described on first use.
     const float *descriptors(int det);
 
-    std::vector<Template> templates_;
-    std::vector<char> slot_used_;
+    Vec<Template> templates_;
+    Vec<char> slot_used_;
     Planes img_;
     const ct_detection *dets_ = nullptr;
-    std::vector<int> desc_of_;    // per detection: its descriptors' slot, or -1
-    std::vector<float> det_desc_; // described detections, kPoints * kDescDim each
+    Vec<int> desc_of_;    // per detection: its descriptors' slot, or -1
+    Vec<float> det_desc_; // described detections, kPoints * kDescDim each
     Ddis ddis_;
 };
 

@@ -125,7 +125,7 @@ void Track::follow(double detection_noise)
     followed = true;
 }
 
-bool occluded(const std::vector<Track> &tracks, size_t i)
+bool occluded(const Vec<Track> &tracks, size_t i)
 {
     const Box a = tracks[i].box();
     const double area = a.width * a.height;

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory.h"
+
 #include "ctrack/ctrack.h"
 #include "meanshift.h"
 #include "motion.h"
@@ -79,7 +81,7 @@ struct Track {
 // Whether another non-tentative track covers more than a fifth of track i's
 // box: it is then not followed by mean shift, and its colour model and
 // appearance template are left as they are.
-bool occluded(const std::vector<Track> &tracks, size_t i);
+bool occluded(const Vec<Track> &tracks, size_t i);
 
 } // namespace ctrack
 

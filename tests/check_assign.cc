@@ -11,12 +11,14 @@
 
 #include "assign.h"
 
+using ctrack::Vec;
+
 namespace {
 
 // Cost of an assignment in the solver's convention: matched costs plus
 // limit / 2 for every row and every column left unmatched.
-double total(const std::vector<double> &c, int n, int m, double limit,
-             const std::vector<int> &row_to_col)
+double total(const Vec<double> &c, int n, int m, double limit,
+             const Vec<int> &row_to_col)
 {
     double s = 0;
     int matched = 0;
@@ -29,11 +31,11 @@ double total(const std::vector<double> &c, int n, int m, double limit,
 }
 
 // Tries every partial matching that uses only allowed pairs.
-double brute_force(const std::vector<double> &c, int n, int m, double limit)
+double brute_force(const Vec<double> &c, int n, int m, double limit)
 {
     double best = INFINITY;
-    std::vector<int> r2c(n, -1);
-    std::vector<char> used(m, 0);
+    Vec<int> r2c(n, -1);
+    Vec<char> used(m, 0);
     std::function<void(int)> rec = [&](int i) {
         if (i == n) {
             best = std::min(best, total(c, n, m, limit, r2c));
@@ -55,9 +57,9 @@ double brute_force(const std::vector<double> &c, int n, int m, double limit)
 }
 
 // The pairs of a dense cost matrix that the limit allows.
-std::vector<ctrack::Pair> allowed(const std::vector<double> &c, int n, int m, double limit)
+Vec<ctrack::Pair> allowed(const Vec<double> &c, int n, int m, double limit)
 {
-    std::vector<ctrack::Pair> p;
+    Vec<ctrack::Pair> p;
     for (int i = 0; i < n; i++)
         for (int j = 0; j < m; j++)
             if (c[(size_t)i * m + j] < limit)
@@ -79,11 +81,11 @@ double uniform()
 START_TEST(matches_brute_force)
 {
     ctrack::Assigner a;
-    std::vector<int> r2c;
+    Vec<int> r2c;
     for (int trial = 0; trial < 3000; trial++) {
         int n = (int)(uniform() * 7), m = (int)(uniform() * 7);
         double limit = 0.2 + 0.8 * uniform();
-        std::vector<double> c(n * m);
+        Vec<double> c(n * m);
         for (double &x : c) {
             x = uniform();
             if (uniform() < 0.1)
@@ -91,7 +93,7 @@ START_TEST(matches_brute_force)
         }
         a.solve(n, m, allowed(c, n, m, limit), limit, r2c);
         ck_assert_int_eq((int)r2c.size(), n);
-        std::vector<char> used(m, 0);
+        Vec<char> used(m, 0);
         for (int i = 0; i < n; i++) {
             int j = r2c[i];
             if (j < 0)
@@ -115,8 +117,8 @@ START_TEST(block_diagonal)
 {
     const int n = 3000;
     ctrack::Assigner a;
-    std::vector<int> r2c;
-    std::vector<ctrack::Pair> p;
+    Vec<int> r2c;
+    Vec<ctrack::Pair> p;
     for (int i = 0; i < n; i++) {
         p.push_back(ctrack::Pair{i, i, 0.1});
         if (i % 3 != 2)
@@ -143,15 +145,15 @@ END_TEST
 START_TEST(large_component_greedy)
 {
     const int n = 200, m = 400;
-    std::vector<double> c((size_t)n * m);
+    Vec<double> c((size_t)n * m);
     for (double &x : c)
         x = uniform();
     const double limit = 0.9;
-    const std::vector<ctrack::Pair> p = allowed(c, n, m, limit);
+    const Vec<ctrack::Pair> p = allowed(c, n, m, limit);
     ctrack::Assigner a;
-    std::vector<int> r2c;
+    Vec<int> r2c;
     a.solve(n, m, p, limit, r2c);
-    std::vector<char> used(m, 0);
+    Vec<char> used(m, 0);
     for (int i = 0; i < n; i++) {
         const int j = r2c[i];
         ck_assert_int_ge(j, 0); // 400 columns, each row allows 90% of them
@@ -171,7 +173,7 @@ END_TEST
 START_TEST(nothing_allowed)
 {
     ctrack::Assigner a;
-    std::vector<int> r2c;
+    Vec<int> r2c;
     a.solve(2, 2, {}, 0.5, r2c);
     ck_assert_int_eq((int)r2c.size(), 2);
     ck_assert_int_eq(r2c[0], -1);

@@ -24,7 +24,7 @@ namespace {
 constexpr int W = 160, H = 120;
 
 struct Gray {
-    std::vector<uint8_t> y = std::vector<uint8_t>(W * H);
+    Vec<uint8_t> y = Vec<uint8_t>(W * H);
     Planes planes() const
     {
         Planes p;
@@ -91,7 +91,7 @@ END_TEST
 START_TEST(every_column_is_modelled)
 {
     const int w = 166, h = 40;
-    std::vector<uint8_t> y(w * h), u((w / 2) * (h / 2), 128), v((w / 2) * (h / 2), 128);
+    Vec<uint8_t> y(w * h), u((w / 2) * (h / 2), 128), v((w / 2) * (h / 2), 128);
     for (int colour = 0; colour < 2; colour++) {
         Background bg;
         Planes p;
@@ -144,7 +144,7 @@ START_TEST(ghosts_have_their_edges_in_the_model)
     g.square(100, 40, 20, 200); // it left, and another arrived
     bg.apply(at(300), g.planes(), nullptr, 0);
     const int s = Background::kScale;
-    std::vector<uint8_t> blob(bg.mask(), bg.mask() + bg.width() * bg.height());
+    Vec<uint8_t> blob(bg.mask(), bg.mask() + bg.width() * bg.height());
     const Rect ghost{20 / s, 40 / s, 40 / s, 60 / s}, real{100 / s, 40 / s, 120 / s, 60 / s};
     ck_assert_int_ge(foreground_in(bg, 20, 40, 40, 60), 90);
     ck_assert_int_ge(foreground_in(bg, 100, 40, 120, 60), 90);
@@ -275,7 +275,7 @@ END_TEST
 // merged; two people side by side in one blob are split.
 START_TEST(fragments_merge_and_groups_split)
 {
-    std::vector<uint8_t> m(W * H, 0);
+    Vec<uint8_t> m(W * H, 0);
     auto rect = [&](int x0, int y0, int x1, int y1) {
         for (int r = y0; r < y1; r++)
             for (int c = x0; c < x1; c++)
@@ -287,7 +287,7 @@ START_TEST(fragments_merge_and_groups_split)
     BlobFinder bf;
     Classifier cls;
     PersonSize size;
-    std::vector<Rect> out;
+    Vec<Rect> out;
     bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 3);
     int merged = 0, parts = 0;
@@ -312,7 +312,7 @@ END_TEST
 // known, though the prior (a person may be 30 pixels tall) kept it.
 START_TEST(groups_split_by_the_learnt_size)
 {
-    std::vector<uint8_t> m(W * H, 0);
+    Vec<uint8_t> m(W * H, 0);
     auto rect = [&](int x0, int y0, int x1, int y1) {
         for (int r = y0; r < y1; r++)
             for (int c = x0; c < x1; c++)
@@ -333,7 +333,7 @@ START_TEST(groups_split_by_the_learnt_size)
     };
     BlobFinder bf;
     Classifier cls;
-    std::vector<Rect> out;
+    Vec<Rect> out;
     const PersonSize unknown, narrow = learnt(0.4), wide = learnt(0.8);
     bf.find(m.data(), W, H, nullptr, 0, unknown, cls, out);
     ck_assert(std::any_of(out.begin(), out.end(), [](const Rect &r) { return r.x0 >= 120; }));
@@ -359,7 +359,7 @@ END_TEST
 // not.
 START_TEST(close_pair_splits_between_tracks)
 {
-    std::vector<uint8_t> m(W * H, 0);
+    Vec<uint8_t> m(W * H, 0);
     for (int r = 20; r < 60; r++) // 28 wide, 40 tall, a flat top: no heads
         for (int c = 80; c < 108; c++)
             m[r * W + c] = 255;
@@ -369,7 +369,7 @@ START_TEST(close_pair_splits_between_tracks)
     BlobFinder bf;
     Classifier cls;
     PersonSize size;
-    std::vector<Rect> out;
+    Vec<Rect> out;
     auto track_at = [](int centre) { return Rect{centre - 8, 20, centre + 8, 60}; };
     const Rect two[2] = {track_at(88), track_at(100)}; // 12 apart, 0.3 heights
     bf.find(m.data(), W, H, two, 2, size, cls, out);
@@ -397,7 +397,7 @@ Shape shape_of(bool (*inside)(double u, double v), int w = 48, int h = 128)
 {
     // Render the shape into a w x h mask (48 x 128: a person's aspect; 14 x
     // 38: a PETS09-S2L1 person at the working scale) and take its profile.
-    std::vector<uint8_t> m(w * h, 0);
+    Vec<uint8_t> m(w * h, 0);
     for (int r = 0; r < h; r++)
         for (int c = 0; c < w; c++)
             m[r * w + c] = inside((c + 0.5) / w, (r + 0.5) / h) ? 255 : 0;
@@ -443,7 +443,7 @@ bool walking_person(double u, double v)
 // box with two bumps on top (the template prefers neither part).
 START_TEST(pair_splits_between_heads)
 {
-    std::vector<uint8_t> m(W * H, 0);
+    Vec<uint8_t> m(W * H, 0);
     auto person = [&](int x0) { // 30 x 80, from row 20
         for (int r = 0; r < 80; r++)
             for (int c = 0; c < 30; c++)
@@ -453,7 +453,7 @@ START_TEST(pair_splits_between_heads)
     BlobFinder bf;
     Classifier cls;
     PersonSize size;
-    std::vector<Rect> out;
+    Vec<Rect> out;
     person(40);
     bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
@@ -648,15 +648,15 @@ namespace {
 // against the ground truth.
 struct RealBlob {
     int label, sequence, frame, w, h;
-    std::vector<uint8_t> mask; // 0 or 255, w x h
+    Vec<uint8_t> mask; // 0 or 255, w x h
 };
 
-std::vector<RealBlob> real_blobs()
+Vec<RealBlob> real_blobs()
 {
     const std::string path = data_dir + "/blobs/labelled.bin";
     FILE *f = std::fopen(path.c_str(), "rb");
     ck_assert_msg(f != nullptr, "cannot open %s", path.c_str());
-    std::vector<RealBlob> out;
+    Vec<RealBlob> out;
     // The first lines, each starting with '#', say what made the file.
     int c;
     while ((c = std::fgetc(f)) == '#')
@@ -668,7 +668,7 @@ std::vector<RealBlob> real_blobs()
     while (std::fread(head, sizeof head, 1, f) == 1) {
         RealBlob b{head[0], head[1], head[2], head[3], head[4], {}};
         ck_assert(b.w > 0 && b.h > 0 && b.w < 4096 && b.h < 4096);
-        std::vector<uint8_t> bits(((size_t)b.w * b.h + 7) / 8);
+        Vec<uint8_t> bits(((size_t)b.w * b.h + 7) / 8);
         ck_assert_uint_eq(std::fread(bits.data(), 1, bits.size(), f), bits.size());
         b.mask.resize((size_t)b.w * b.h);
         for (size_t i = 0; i < b.mask.size(); i++)
@@ -687,7 +687,7 @@ std::vector<RealBlob> real_blobs()
 // Accepting everything or nothing, or a vote that ignores the shape, fails.
 START_TEST(real_blobs_are_classified)
 {
-    const std::vector<RealBlob> blobs = real_blobs();
+    const Vec<RealBlob> blobs = real_blobs();
     int n[2][2] = {}, ok[2][2] = {}; // [sequence][label]
     Shape shape;
     for (const RealBlob &b : blobs) {

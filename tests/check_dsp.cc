@@ -28,11 +28,11 @@ uint8_t next_byte()
 }
 
 // The flag sets this CPU can run, the portable one (0) first.
-std::vector<unsigned> runnable()
+Vec<unsigned> runnable()
 {
     set_cpu_mask(~0u);
     const unsigned all = cpu_flags();
-    std::vector<unsigned> out = {0};
+    Vec<unsigned> out = {0};
     for (unsigned f : {(unsigned)kCpuSSSE3, kCpuSSSE3 | kCpuAVX2, (unsigned)kCpuNEON})
         if ((all & f) == f)
             out.push_back(f);
@@ -49,7 +49,7 @@ START_TEST(rows_match_the_portable_build)
         Dsp d;
         dsp_init(&d, flags);
         for (int w : {1, 2, 7, 15, 16, 17, 31, 32, 33, 63, 640, 1921}) {
-            std::vector<uint8_t> src(3 * (size_t)w);
+            Vec<uint8_t> src(3 * (size_t)w);
             for (uint8_t &b : src)
                 b = next_byte();
             // The extremes too: all black, all white.
@@ -59,8 +59,8 @@ START_TEST(rows_match_the_portable_build)
                 std::memset(src.data(), 255, src.size());
             for (int rgb = 0; rgb < 2; rgb++) {
                 auto fa = rgb ? ref.rgb_row : ref.bgr_row, fb = rgb ? d.rgb_row : d.bgr_row;
-                std::vector<uint8_t> ya(w), yb(w);
-                std::vector<int16_t> ua(w), ub(w), va(w), vb(w);
+                Vec<uint8_t> ya(w), yb(w);
+                Vec<int16_t> ua(w), ub(w), va(w), vb(w);
                 fa(src.data(), w, ya.data(), ua.data(), va.data());
                 fb(src.data(), w, yb.data(), ub.data(), vb.data());
                 ck_assert_msg(ya == yb && ua == ub && va == vb,
@@ -86,7 +86,7 @@ START_TEST(background_rows_match_the_portable_build)
         for (int trial = 0; trial < 400; trial++) {
             const int w = 1 + trial % 70;
             const bool near = trial % 3 == 0;
-            std::vector<uint8_t> in[8];
+            Vec<uint8_t> in[8];
             for (auto &v : in) {
                 v.resize(w);
                 for (uint8_t &b : v)
@@ -115,7 +115,7 @@ START_TEST(background_rows_match_the_portable_build)
             r.vmin = 25 + next_byte() % 30;
             r.chroma_fg = 24 + next_byte() % 20;
             r.shadow_chroma = 8 + next_byte() % 10;
-            std::vector<uint8_t> out_a[5], out_b[5];
+            Vec<uint8_t> out_a[5], out_b[5];
             BgRow a = r, b = r;
             for (int k = 0; k < 5; k++) {
                 out_a[k].assign(w, 7);
@@ -134,14 +134,14 @@ START_TEST(background_rows_match_the_portable_build)
 
             // Gathering: luma every other pixel, with and without the
             // exposure table; NV12's interleaved chroma.
-            std::vector<uint8_t> src(2 * (size_t)w + 1), lut(256), uv(2 * (size_t)w + 1);
+            Vec<uint8_t> src(2 * (size_t)w + 1), lut(256), uv(2 * (size_t)w + 1);
             for (uint8_t &v : src)
                 v = next_byte();
             for (uint8_t &v : uv)
                 v = next_byte();
             for (int i = 0; i < 256; i++)
                 lut[i] = (uint8_t)(255 - i / 2);
-            std::vector<uint8_t> ga[3], gb[3];
+            Vec<uint8_t> ga[3], gb[3];
             for (int k = 0; k < 3; k++) {
                 ga[k].assign(w, 1);
                 gb[k].assign(w, 1);
@@ -170,7 +170,7 @@ END_TEST
 START_TEST(frames_match_the_portable_build)
 {
     const int w = 333, h = 101, stride = 3 * w + 17;
-    std::vector<uint8_t> px((size_t)stride * h);
+    Vec<uint8_t> px((size_t)stride * h);
     for (uint8_t &b : px)
         b = next_byte();
     ct_frame f;
@@ -182,13 +182,13 @@ START_TEST(frames_match_the_portable_build)
     f.strides[0] = stride;
     Dsp ref;
     dsp_init(&ref, 0);
-    std::vector<int16_t> buf_ref;
+    Vec<int16_t> buf_ref;
     const Planes a = packed_to_i420(f, ref, &buf_ref);
     const size_t bytes = (size_t)w * h + 2 * (size_t)((w + 1) / 2) * ((h + 1) / 2);
     for (unsigned flags : runnable()) {
         Dsp d;
         dsp_init(&d, flags);
-        std::vector<int16_t> buf;
+        Vec<int16_t> buf;
         const Planes b = packed_to_i420(f, d, &buf);
         ck_assert_msg(std::memcmp(a.y, b.y, bytes) == 0, "flags 0x%x: planes differ", flags);
     }

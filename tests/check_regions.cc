@@ -104,7 +104,7 @@ START_TEST(outer_regions_equal_opencv)
     std::mt19937 rng(22);
     const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 5));
     OuterRegions regions;
-    std::vector<Rect> got;
+    Vec<Rect> got;
     int nested = 0, total = 0;
     for (int trial = 0; trial < 3000; trial++) {
         const int w = std::uniform_int_distribution<int>(1, 90)(rng);
@@ -157,7 +157,7 @@ START_TEST(buffers_are_kept)
     std::mt19937 rng(23);
     OuterRegions regions;
     Closing closing;
-    std::vector<Rect> got;
+    Vec<Rect> got;
     regions.find(nullptr, 0, Rect{0, 0, 0, 0}, got);
     ck_assert_int_eq((int)got.size(), 0);
     const cv::Mat m = random_mask(rng, 80, 60);

@@ -313,6 +313,34 @@ CT_API int ct_tracker_create(const ct_config *cfg, ct_tracker **out);
 /* Destroys a tracker; NULL is accepted and ignored. */
 CT_API void ct_tracker_destroy(ct_tracker *tracker);
 
+/* A host's allocator (added in 0.9.0), as zstd's ZSTD_customMem and libjxl's
+ * JxlMemoryManager: a camera with a fixed heap hands the tracker its own. */
+typedef struct ct_allocator {
+    /* sizeof(ct_allocator) as the caller's header knows it. */
+    size_t size;
+    /* Returns `size` bytes (size > 0) aligned for any type, as malloc does,
+     * or NULL when there are none: the call that needed them then fails
+     * with CT_ERROR_OUT_OF_MEMORY and changes nothing. */
+    void *(*alloc)(void *opaque, size_t size);
+    /* Gives back a block alloc returned (never NULL). */
+    void (*free)(void *opaque, void *ptr);
+    /* Passed to both, untouched. */
+    void *opaque;
+} ct_allocator;
+
+/* Like ct_tracker_create(), with every block the tracker allocates (the
+ * tracker itself, its tracks, models, templates and buffers) taken from
+ * `allocator` and given back to it, at the latest by ct_tracker_destroy().
+ * `allocator` NULL is ct_tracker_create(); else alloc and free are both set.
+ * The struct is copied. The callbacks are called only from inside
+ * ct_tracker_create_with_allocator(), ct_tracker_feed(), ct_tracker_reset()
+ * and ct_tracker_destroy(), on the calling thread. Not the tracker's own,
+ * and from the C++ runtime's operator new: FLANN's kd-tree, which serves
+ * appearance templates of more than 128 points only (the library's have
+ * 72), and the C++ runtime's exception objects. (docs/API.md, "Memory".) */
+CT_API int ct_tracker_create_with_allocator(const ct_config *cfg, const ct_allocator *allocator,
+                                            ct_tracker **out);
+
 /* Runs one step. `frame` gives the timestamp and, unless its format is
  * CT_FORMAT_NONE, the pixels. `dets` holds `n` detections (NULL when n is
  * 0). A failed call changes nothing in the tracker. */

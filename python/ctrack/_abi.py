@@ -164,6 +164,21 @@ class PersonSize(C.Structure):
     ]
 
 
+# Added in 0.9.0: a host's allocator (ct_tracker_create_with_allocator). A
+# Python host has no use for it; the binding mirrors it for completeness.
+ALLOC_FN = C.CFUNCTYPE(C.c_void_p, C.c_void_p, C.c_size_t)
+FREE_FN = C.CFUNCTYPE(None, C.c_void_p, C.c_void_p)
+
+
+class Allocator(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("alloc", ALLOC_FN),
+        ("free", FREE_FN),
+        ("opaque", C.c_void_p),
+    ]
+
+
 def declare(lib):
     """Sets the argument and result types of every function of `lib`."""
     P = C.POINTER
@@ -190,6 +205,9 @@ def declare(lib):
     # Added in 0.9.0: declared where the library has it.
     if hasattr(lib, "ct_tracker_get_person_size"):
         sig["ct_tracker_get_person_size"] = (C.c_int, [C.c_void_p, P(PersonSize)])
+    if hasattr(lib, "ct_tracker_create_with_allocator"):
+        sig["ct_tracker_create_with_allocator"] = (C.c_int, [P(Config), P(Allocator),
+                                                             P(C.c_void_p)])
     for name, (res, args) in sig.items():
         f = getattr(lib, name)
         f.restype = res

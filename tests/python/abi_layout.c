@@ -62,6 +62,10 @@ int main(void)
     FIELD(ct_person_size, size); FIELD(ct_person_size, known);
     FIELD(ct_person_size, height_slope); FIELD(ct_person_size, height_intercept);
     FIELD(ct_person_size, width_ratio); FIELD(ct_person_size, samples);
+    first = 0;
+    printf("}, \"Allocator\": {\"sizeof\": %zu, ", sizeof(ct_allocator));
+    FIELD(ct_allocator, size); FIELD(ct_allocator, alloc); FIELD(ct_allocator, free);
+    FIELD(ct_allocator, opaque);
     /* The constants the binding mirrors. */
     printf("}, \"Constants\": {\"FORMAT_NONE\": %u, \"FORMAT_I420\": %u, "
            "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "

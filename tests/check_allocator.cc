@@ -1,0 +1,407 @@
+// A host's allocator (ct_tracker_create_with_allocator): a counting one is
+// given to a tracker, which runs over TUD-Campus in every mode beside a
+// tracker of the default allocator. Every block the tracker allocates must
+// come from the callbacks and go back to them by ct_tracker_destroy(), no
+// allocation may reach operator new or malloc from inside its calls (both
+// are replaced here and count what a call makes on this thread), the tracks
+// must be the default tracker's, and a callback that returns NULL fails the
+// call with CT_ERROR_OUT_OF_MEMORY and changes nothing.
+#include <check.h>
+
+#include "common.h"
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#include "ctrack/ctrack.h"
+#include "detfile.h"
+#include "video.h"
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define INTERPOSE_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define INTERPOSE_MALLOC 0
+#endif
+#endif
+#ifndef INTERPOSE_MALLOC
+#define INTERPOSE_MALLOC 1
+#endif
+
+static const char *data_dir;
+static const char *tud_video;
+
+// Set around each call into the tracker under test: allocations made on
+// this thread meanwhile, other than the callbacks' own, are strays.
+static thread_local bool inside = false;
+static thread_local bool in_callback = false;
+static long strays = 0;
+
+static void note_allocation()
+{
+    if (inside && !in_callback) {
+        strays++;
+        if (std::getenv("CT_ABORT_ON_STRAY"))
+            std::abort();
+    }
+}
+
+#if INTERPOSE_MALLOC
+extern "C" {
+void *__libc_malloc(size_t);
+void *__libc_calloc(size_t, size_t);
+void *__libc_realloc(void *, size_t);
+void *__libc_memalign(size_t, size_t);
+void __libc_free(void *);
+void *malloc(size_t n)
+{
+    note_allocation();
+    return __libc_malloc(n);
+}
+void *calloc(size_t n, size_t k)
+{
+    note_allocation();
+    return __libc_calloc(n, k);
+}
+void *realloc(void *p, size_t n)
+{
+    note_allocation();
+    return __libc_realloc(p, n);
+}
+void free(void *p) { __libc_free(p); }
+void *memalign(size_t a, size_t n)
+{
+    note_allocation();
+    return __libc_memalign(a, n);
+}
+void *aligned_alloc(size_t a, size_t n) { return memalign(a, n); }
+int posix_memalign(void **out, size_t a, size_t n)
+{
+    void *p = memalign(a, n);
+    if (!p)
+        return ENOMEM;
+    *out = p;
+    return 0;
+}
+}
+#endif
+
+void *operator new(std::size_t n)
+{
+    note_allocation();
+    void *p = std::malloc(n ? n : 1);
+    if (!p)
+        throw std::bad_alloc();
+    return p;
+}
+void *operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void *p) noexcept { std::free(p); }
+void operator delete[](void *p) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+// The host's allocator: counts blocks and bytes, and can refuse.
+struct Counting {
+    long allocs = 0, frees = 0, refused = 0;
+    long long live = 0, peak = 0;
+    long fail_countdown = -1; // the allocation that fails (0: the next); -1 none
+};
+
+struct Header {
+    size_t size;
+    Counting *owner;
+    alignas(std::max_align_t) unsigned char data[1];
+};
+
+// What the callbacks do is theirs, Check's bookkeeping included.
+struct InCallback {
+    InCallback() { in_callback = true; }
+    ~InCallback() { in_callback = false; }
+};
+
+void *counting_alloc(void *opaque, size_t size)
+{
+    InCallback mark;
+    Counting *c = static_cast<Counting *>(opaque);
+    ck_assert_uint_gt(size, 0);
+    if (c->fail_countdown >= 0 && c->fail_countdown-- == 0) {
+        c->refused++;
+        return nullptr;
+    }
+    Header *h = static_cast<Header *>(std::malloc(offsetof(Header, data) + size));
+    ck_assert_ptr_nonnull(h);
+    h->size = size;
+    h->owner = c;
+    c->allocs++;
+    c->live += (long long)size;
+    if (c->live > c->peak)
+        c->peak = c->live;
+    ck_assert_uint_eq((uintptr_t)h->data % alignof(std::max_align_t), 0);
+    return h->data;
+}
+
+void counting_free(void *opaque, void *p)
+{
+    InCallback mark;
+    Counting *c = static_cast<Counting *>(opaque);
+    ck_assert_ptr_nonnull(p);
+    Header *h = reinterpret_cast<Header *>(static_cast<unsigned char *>(p) -
+                                           offsetof(Header, data));
+    // Given back to the allocator that gave it.
+    ck_assert_ptr_eq(h->owner, c);
+    c->frees++;
+    c->live -= (long long)h->size;
+    std::free(h);
+}
+
+// Runs f with the stray count armed. A call in which the host refused a
+// block throws std::bad_alloc inside, and the C++ runtime allocates the
+// exception object with malloc: not counted.
+template <typename F> auto watched(const Counting &host, F &&f)
+{
+    const long before = strays, refused = host.refused;
+    inside = true;
+    auto r = f();
+    inside = false;
+    if (host.refused != refused)
+        strays = before;
+    return r;
+}
+
+std::vector<ct_track> tracks_of(ct_tracker *t)
+{
+    std::vector<ct_track> out(512);
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out.data(), out.size(), sizeof(ct_track), &count),
+                     CT_OK);
+    out.resize(count);
+    return out;
+}
+
+bool same(const std::vector<ct_track> &a, const std::vector<ct_track> &b)
+{
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(ct_track)) == 0);
+}
+
+ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
+{
+    bgr->resize((size_t)3 * f.width * f.height);
+    i420_to_bgr24(&f, bgr->data());
+    ct_frame out = f;
+    out.format = CT_FORMAT_BGR24;
+    out.planes[0] = bgr->data();
+    out.planes[1] = out.planes[2] = nullptr;
+    out.strides[0] = 3 * f.width;
+    out.strides[1] = out.strides[2] = 0;
+    return out;
+}
+
+enum Mode { DETECTIONS, DETECTIONS_AND_PIXELS, PIXELS, PIXELS_BGR24, VERIFY };
+
+// TUD-Campus in one mode: the tracker of the counting allocator against
+// one of the default allocator. In the first 10 steps and every
+// kFailEvery-th the callback first refuses one of the step's allocations.
+void replay(Mode mode)
+{
+    constexpr int kFailEvery = 7;
+    det_file df;
+    char path[1024], err[512];
+    std::snprintf(path, sizeof path, "%s/TUD-Campus/det/det.txt", data_dir);
+    ck_assert_msg(detfile_load(path, &df, err, sizeof err) == 0, "%s", err);
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_info info;
+    video_input *in = nullptr;
+    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    cfg.source = mode == PIXELS || mode == PIXELS_BGR24 ? CT_SOURCE_PIXELS : CT_SOURCE_DETECTIONS;
+    cfg.verify_detections = mode == VERIFY;
+    Counting host;
+    ct_allocator a = {sizeof a, counting_alloc, counting_free, &host};
+    ct_tracker *ref = nullptr, *t = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    strays = 0;
+    ck_assert_int_eq(watched(host, [&] { return ct_tracker_create_with_allocator(&cfg, &a, &t); }),
+                     CT_OK);
+    ck_assert_int_gt(host.allocs, 0); // the tracker itself, at least
+
+    std::vector<uint8_t> bgr;
+    int frames = 0, refused = 0;
+    for (int k = 1;; k++) {
+        ct_frame f;
+        const int r = video_read(in, &f, err, sizeof err);
+        ck_assert_msg(r >= 0, "%s", err);
+        if (r == 0)
+            break;
+        frames++;
+        if (mode == PIXELS_BGR24)
+            f = as_bgr24(f, &bgr);
+        if (mode == DETECTIONS) {
+            const ct_frame pixels = f;
+            ct_frame_default(&f, sizeof f);
+            f.width = pixels.width;
+            f.height = pixels.height;
+        }
+        f.timestamp_us = (int64_t)((k - 1) * 1e6 / 25);
+        size_t n = 0;
+        const ct_detection *d = detfile_frame(&df, k, &n);
+        if (cfg.source == CT_SOURCE_PIXELS)
+            d = nullptr, n = 0;
+        ck_assert_int_eq(ct_tracker_feed(ref, &f, d, n), CT_OK);
+        if (k <= 10 || k % kFailEvery == 0) {
+            const std::vector<ct_track> before = tracks_of(t);
+            host.fail_countdown = k % 3;
+            const int st = watched(host, [&] { return ct_tracker_feed(t, &f, d, n); });
+            if (host.fail_countdown < 0) {
+                ck_assert_int_eq(st, CT_ERROR_OUT_OF_MEMORY);
+                ck_assert(same(tracks_of(t), before));
+                refused++;
+            } else {
+                ck_assert_int_eq(st, CT_OK);
+            }
+            host.fail_countdown = -1;
+            if (st == CT_OK) {
+                ck_assert(same(tracks_of(t), tracks_of(ref)));
+                continue;
+            }
+        }
+        ck_assert_int_eq(watched(host, [&] { return ct_tracker_feed(t, &f, d, n); }), CT_OK);
+        ck_assert(same(tracks_of(t), tracks_of(ref)));
+    }
+    ck_assert_int_gt(frames, 60);
+    ck_assert_int_eq(watched(host, [&] { return ct_tracker_reset(t); }), CT_OK);
+    ct_stats s;
+    s.size = sizeof s;
+    ck_assert_int_eq(ct_tracker_get_stats(t, &s), CT_OK);
+    watched(host, [&] {
+        ct_tracker_destroy(t);
+        return 0;
+    });
+    ct_tracker_destroy(ref);
+    std::printf("host allocator, mode %d: %ld blocks (peak %lld bytes live, the tracker says "
+                "%llu now), %d feeds refused, %ld stray allocations\n",
+                (int)mode, host.allocs, host.peak, (unsigned long long)s.memory_bytes, refused,
+                strays);
+    ck_assert_int_eq(strays, 0);
+    ck_assert_int_eq(host.frees, host.allocs);
+    ck_assert_int_eq(host.live, 0);
+    ck_assert_int_gt(refused, 0);
+    // With pixels the tracker's buffers come from the host too.
+    if (mode != DETECTIONS)
+        ck_assert_int_gt(host.peak, 100000);
+    video_close(in);
+    detfile_free(&df);
+}
+
+} // namespace
+
+START_TEST(detections_only)
+{
+    replay(DETECTIONS);
+}
+END_TEST
+
+START_TEST(detections_and_pixels)
+{
+    replay(DETECTIONS_AND_PIXELS);
+}
+END_TEST
+
+START_TEST(pixels_only)
+{
+    replay(PIXELS);
+}
+END_TEST
+
+START_TEST(pixels_only_bgr24)
+{
+    replay(PIXELS_BGR24);
+}
+END_TEST
+
+START_TEST(verify_detections)
+{
+    replay(VERIFY);
+}
+END_TEST
+
+// Creation: a refused first block fails it cleanly; a struct too small or
+// a callback missing is refused; NULL is the default allocator.
+START_TEST(create_checks_the_allocator)
+{
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    Counting host;
+    ct_allocator a = {sizeof a, counting_alloc, counting_free, &host};
+    ct_tracker *t = reinterpret_cast<ct_tracker *>(&cfg);
+    // Each of its allocations refused in turn, until it makes fewer.
+    long k = 0;
+    for (;; k++) {
+        host.fail_countdown = k;
+        const int st = ct_tracker_create_with_allocator(&cfg, &a, &t);
+        if (st == CT_OK)
+            break;
+        ck_assert_int_eq(st, CT_ERROR_OUT_OF_MEMORY);
+        ck_assert_ptr_null(t);
+        ck_assert_int_eq(host.live, 0);
+    }
+    ck_assert_int_gt(k, 0);
+    ck_assert_int_ge(host.fail_countdown, 0); // the refusal was never reached
+    host.fail_countdown = -1;
+    ct_tracker_destroy(t);
+    ck_assert_int_eq(host.live, 0);
+    ck_assert_int_eq(host.frees, host.allocs);
+    host = Counting();
+    ct_allocator bad = a;
+    bad.size = sizeof(size_t);
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &bad, &t), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(t);
+    bad = a;
+    bad.alloc = nullptr;
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &bad, &t), CT_ERROR_INVALID_ARGUMENT);
+    bad = a;
+    bad.free = nullptr;
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &bad, &t), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &a, nullptr),
+                     CT_ERROR_INVALID_ARGUMENT);
+    cfg.min_hits = 0; // a bad config, checked as by ct_tracker_create()
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &a, &t), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(host.allocs, 0);
+    ct_config_default(&cfg, sizeof cfg);
+    ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, nullptr, &t), CT_OK);
+    ck_assert_ptr_nonnull(t);
+    ct_tracker_destroy(t);
+    ck_assert_int_eq(host.allocs, 0);
+}
+END_TEST
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: check_allocator MOT15_DIR TUD_CAMPUS_Y4M\n");
+        return 2;
+    }
+    data_dir = argv[1];
+    tud_video = argv[2];
+    Suite *s = suite_create("allocator");
+    TCase *tc = tcase_create("allocator");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, create_checks_the_allocator);
+    tcase_add_test(tc, detections_only);
+    tcase_add_test(tc, detections_and_pixels);
+    tcase_add_test(tc, pixels_only);
+    tcase_add_test(tc, pixels_only_bgr24);
+    tcase_add_test(tc, verify_detections);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+}
