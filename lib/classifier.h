@@ -100,7 +100,7 @@ public:
                            float width, float height);
     size_t memory_bytes() const
     {
-        return shape_.cells.capacity() + shape_.todo.capacity() * sizeof(int) +
+        return shape_.runs.memory_bytes() + shape_.columns.capacity() * sizeof(int) +
                memo_.capacity() * sizeof(Memo);
     }
 

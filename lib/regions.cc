@@ -1,6 +1,7 @@
 #include "regions.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace ctrack {
 
@@ -77,7 +78,31 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
     }
 }
 
-int OuterRegions::root(Vec<Run> &runs, int i)
+namespace {
+
+// The first x in [x, end) whose byte is zero (Zero) or non-zero (!Zero), or
+// end; eight bytes at a time across long runs.
+template <bool Zero> int run_end(const uint8_t *row, int x, int end)
+{
+    constexpr uint64_t kOnes = 0x0101010101010101ull, kHigh = 0x8080808080808080ull;
+    while (x + 8 <= end) {
+        uint64_t v;
+        std::memcpy(&v, row + x, 8);
+        // Zero: stop at a run of non-zero bytes, so the word must be all
+        // non-zero (no zero byte) to skip; !Zero: all zero.
+        const bool skip = Zero ? ((v - kOnes) & ~v & kHigh) == 0 : v == 0;
+        if (!skip)
+            break;
+        x += 8;
+    }
+    while (x < end && (row[x] != 0) == Zero)
+        x++;
+    return x;
+}
+
+} // namespace
+
+int BoxRuns::root(Vec<Run> &runs, int i)
 {
     int r = i;
     while (runs[r].up != r)
@@ -90,7 +115,7 @@ int OuterRegions::root(Vec<Run> &runs, int i)
     return r;
 }
 
-void OuterRegions::join(Vec<Run> &runs, int a, int b)
+void BoxRuns::join(Vec<Run> &runs, int a, int b)
 {
     a = root(runs, a);
     b = root(runs, b);
@@ -101,56 +126,56 @@ void OuterRegions::join(Vec<Run> &runs, int a, int b)
         runs[a].up = b;
 }
 
-void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, Vec<Rect> &out)
+void BoxRuns::label(const uint8_t *mask, int stride, const Rect &box, bool join_foreground)
 {
-    out.clear();
     fg_.clear();
     bg_.clear();
     fg_row_.clear();
     bg_row_.clear();
-    const int ah = area.y1 - area.y0;
-    if (area.x1 <= area.x0 || ah <= 0)
-        return;
-    // Background run 0 stands for everything around the area.
+    // Background run 0 stands for everything around the box.
     bg_.push_back(Run{0, 0, -1, 0, -1});
-    for (int y = area.y0; y < area.y1; y++) {
+    if (box.x1 <= box.x0 || box.y1 <= box.y0) {
+        fg_row_.push_back(0);
+        bg_row_.push_back(1);
+        return;
+    }
+    for (int y = box.y0; y < box.y1; y++) {
         const uint8_t *row = mask + (size_t)y * stride;
         const int fg_first = (int)fg_.size(), bg_first = (int)bg_.size();
         fg_row_.push_back(fg_first);
         bg_row_.push_back(bg_first);
-        const bool edge_row = y == area.y0 || y == area.y1 - 1;
-        int x = area.x0;
-        while (x < area.x1) {
-            int e = x;
+        const bool edge_row = y == box.y0 || y == box.y1 - 1;
+        int x = box.x0;
+        while (x < box.x1) {
             if (row[x]) {
-                while (e < area.x1 && row[e])
-                    e++;
-                const int left = e == x || x == area.x0 ? -1 : (int)bg_.size() - 1;
+                const int e = run_end<true>(row, x + 1, box.x1);
+                const int left = x == box.x0 ? -1 : (int)bg_.size() - 1;
                 fg_.push_back(Run{x, e, y, (int)fg_.size(), left});
+                x = e;
             } else {
-                while (e < area.x1 && !row[e])
-                    e++;
+                const int e = run_end<false>(row, x + 1, box.x1);
                 const int i = (int)bg_.size();
                 bg_.push_back(Run{x, e, y, i, -1});
-                if (edge_row || x == area.x0 || e == area.x1)
+                if (edge_row || x == box.x0 || e == box.x1)
                     join(bg_, 0, i);
+                x = e;
             }
-            x = e;
         }
-        if (y == area.y0)
+        if (y == box.y0)
             continue;
         // Joined to the previous row's runs: foreground through the 8
         // neighbours (runs that touch at a corner), background through the
         // 4 (runs that share a column).
         const int pf = fg_row_[fg_row_.size() - 2], pb = bg_row_[bg_row_.size() - 2];
-        for (int i = fg_first, j = pf; i < (int)fg_.size() && j < fg_first;) {
-            if (fg_[i].x0 <= fg_[j].x1 && fg_[j].x0 <= fg_[i].x1)
-                join(fg_, i, j);
-            if (fg_[i].x1 < fg_[j].x1)
-                i++;
-            else
-                j++;
-        }
+        if (join_foreground)
+            for (int i = fg_first, j = pf; i < (int)fg_.size() && j < fg_first;) {
+                if (fg_[i].x0 <= fg_[j].x1 && fg_[j].x0 <= fg_[i].x1)
+                    join(fg_, i, j);
+                if (fg_[i].x1 < fg_[j].x1)
+                    i++;
+                else
+                    j++;
+            }
         for (int i = bg_first, j = pb; i < (int)bg_.size() && j < bg_first;) {
             if (bg_[i].x0 < bg_[j].x1 && bg_[j].x0 < bg_[i].x1)
                 join(bg_, i, j);
@@ -160,15 +185,24 @@ void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, Vec<R
                 j++;
         }
     }
+    fg_row_.push_back((int)fg_.size());
+    bg_row_.push_back((int)bg_.size());
+}
+
+void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, Vec<Rect> &out)
+{
+    out.clear();
+    runs_.label(mask, stride, area);
+    const Vec<BoxRuns::Run> &fg = runs_.fg();
     // Each region's box; its root is its first run, whose left neighbour
     // lies in the background around it (no hole of the region itself is on
     // the region's first row): a region is outer when that background is
     // the area's surroundings.
-    box_of_.assign(fg_.size(), -1);
+    box_of_.assign(fg.size(), -1);
     boxes_.clear();
-    for (int i = 0; i < (int)fg_.size(); i++) {
-        const int r = root(fg_, i);
-        const Run &run = fg_[i];
+    for (int i = 0; i < (int)fg.size(); i++) {
+        const int r = runs_.fg_root(i);
+        const BoxRuns::Run &run = fg[i];
         if (r == i) {
             box_of_[i] = (int)boxes_.size();
             boxes_.push_back(Rect{run.x0, run.y, run.x1, run.y + 1});
@@ -179,8 +213,8 @@ void OuterRegions::find(const uint8_t *mask, int stride, const Rect &area, Vec<R
         b.x1 = std::max(b.x1, run.x1);
         b.y1 = std::max(b.y1, run.y + 1);
     }
-    for (int i = (int)fg_.size() - 1; i >= 0; i--)
-        if (box_of_[i] >= 0 && (fg_[i].left < 0 || root(bg_, fg_[i].left) == 0))
+    for (int i = (int)fg.size() - 1; i >= 0; i--)
+        if (box_of_[i] >= 0 && (fg[i].left < 0 || runs_.outside(fg[i].left)))
             out.push_back(boxes_[(size_t)box_of_[i]]);
 }
 

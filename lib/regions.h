@@ -36,6 +36,44 @@ private:
     Vec<uint8_t> a_, b_; // the area's rows, between the passes
 };
 
+// The runs of a box of the mask (stretches of zero or non-zero pixels in
+// a row), joined into regions: foreground through the 8 neighbours,
+// background through the 4, the box surrounded by background. Background
+// run 0 stands for what surrounds the box; a background run joined to it is
+// outside every region, one that is not lies in a hole.
+class BoxRuns {
+public:
+    // A run [x0, x1) of row y. `up` is its union-find parent (runs are
+    // numbered in raster order and a set's root is its first run); for a
+    // foreground run, `left` is the background run just before it, -1 at
+    // the box's edge.
+    struct Run {
+        int x0, x1, y, up, left;
+    };
+    // With join_foreground false, the foreground runs are not joined into
+    // regions (each is its own root).
+    void label(const uint8_t *mask, int stride, const Rect &box, bool join_foreground = true);
+    int fg_root(int i) { return root(fg_, i); }
+    // Whether background run i is outside (joined to what surrounds the box).
+    bool outside(int i) { return root(bg_, i) == 0; }
+    const Vec<Run> &fg() const { return fg_; }
+    const Vec<Run> &bg() const { return bg_; }
+    // The background runs of the box's row r (0 for its first): [first, end).
+    int bg_first(int r) const { return bg_row_[(size_t)r]; }
+    int bg_end(int r) const { return bg_row_[(size_t)r + 1]; }
+    size_t memory_bytes() const
+    {
+        return (fg_.capacity() + bg_.capacity()) * sizeof(Run) +
+               (fg_row_.capacity() + bg_row_.capacity()) * sizeof(int);
+    }
+
+private:
+    static int root(Vec<Run> &runs, int i);
+    static void join(Vec<Run> &runs, int a, int b);
+    Vec<Run> fg_, bg_;
+    Vec<int> fg_row_, bg_row_; // each row's first run, then the end
+};
+
 // The bounding boxes of the outer regions of the mask inside `area`:
 // regions of non-zero pixels joined through their 8 neighbours, background
 // joined through its 4, the area surrounded by background, and a region
@@ -48,24 +86,13 @@ public:
     void find(const uint8_t *mask, int stride, const Rect &area, Vec<Rect> &out);
     size_t memory_bytes() const
     {
-        return (fg_.capacity() + bg_.capacity()) * sizeof(Run) +
-               (fg_row_.capacity() + bg_row_.capacity() + box_of_.capacity()) * sizeof(int) +
+        return runs_.memory_bytes() + box_of_.capacity() * sizeof(int) +
                boxes_.capacity() * sizeof(Rect);
     }
 
 private:
-    // A run of equal pixels in one row, [x0, x1); `up` is its union-find
-    // parent (runs are numbered in raster order and a set's root is its
-    // first run); for a foreground run, `left` is the background run just
-    // before it, -1 at the area's edge.
-    struct Run {
-        int x0, x1, y, up, left;
-    };
-    int root(Vec<Run> &runs, int i);
-    void join(Vec<Run> &runs, int a, int b);
-    Vec<Run> fg_, bg_;
-    Vec<int> fg_row_, bg_row_; // each row's first run, then the end
-    Vec<int> box_of_;          // per root foreground run: its box
+    BoxRuns runs_;
+    Vec<int> box_of_; // per root foreground run: its box
     Vec<Rect> boxes_;
 };
 

@@ -52,50 +52,8 @@ float area_between(const float (*l)[2], int nl, const float (*r)[2], int nr)
     return (float)(std::fabs(a) / 2);
 }
 
-enum Cell : uint8_t { kHole = 0, kForeground = 1, kOutside = 2 };
-
-// Marks each pixel of the box [x0, x1) x [y0, y1): foreground, background
-// that the box's border reaches through background (4-connected), or hole.
-void mark_cells(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
-{
-    const int w = x1 - x0, h = y1 - y0;
-    s->cells.resize((size_t)w * h);
-    uint8_t *c = s->cells.data();
-    for (int y = 0; y < h; y++) {
-        const uint8_t *row = mask + (size_t)(y0 + y) * stride + x0;
-        for (int x = 0; x < w; x++)
-            c[(size_t)y * w + x] = row[x] ? kForeground : kHole;
-    }
-    Vec<int> &todo = s->todo;
-    todo.clear();
-    auto reach = [&](int x, int y) {
-        const size_t i = (size_t)y * w + x;
-        if (c[i] == kHole) {
-            c[i] = kOutside;
-            todo.push_back((int)i);
-        }
-    };
-    for (int x = 0; x < w; x++) {
-        reach(x, 0);
-        reach(x, h - 1);
-    }
-    for (int y = 0; y < h; y++) {
-        reach(0, y);
-        reach(w - 1, y);
-    }
-    while (!todo.empty()) {
-        const int i = todo.back();
-        todo.pop_back();
-        const int x = i % w, y = i / w;
-        if (x > 0) reach(x - 1, y);
-        if (x + 1 < w) reach(x + 1, y);
-        if (y > 0) reach(x, y - 1);
-        if (y + 1 < h) reach(x, y + 1);
-    }
-}
-
-// The profile of the foreground inside the box, whose cells mark_cells()
-// marked in s->cells.
+// The profile of the foreground inside the box, whose runs s->runs
+// labelled.
 void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
 {
     Profile *p = &s->profile;
@@ -121,11 +79,14 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         int rr = x1 - 1;
         while (!row[rr])
             rr--;
-        // The area inside the outer contour: foreground and holes.
-        const uint8_t *cells = s->cells.data() + (size_t)(y - y0) * w;
-        int count = 0;
-        for (int x = l; x <= rr; x++)
-            count += cells[x - x0] != kOutside;
+        // The area inside the outer contour: foreground and holes, all of
+        // [l, rr] but the background outside the blob (reached from the
+        // box's border).
+        int count = rr - l + 1;
+        const Vec<BoxRuns::Run> &bg = s->runs.bg();
+        for (int i = s->runs.bg_first(y - y0); i < s->runs.bg_end(y - y0); i++)
+            if (bg[i].x0 > l && bg[i].x1 <= rr && s->runs.outside(i))
+                count -= bg[i].x1 - bg[i].x0;
         // Pixel centres, from the box's centre in box heights.
         p->edge[r][0] = (float)((l + 0.5 - centre) / h);
         p->edge[r][1] = (float)((rr + 0.5 - centre) / h);
@@ -149,9 +110,43 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
 }
 
-// The outline's distance map of the foreground inside the box.
-void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Outline *o)
+// One pass of the 3-4 chamfer distance over the rows in the order of
+// `step` (1 down, -1 up): each cell takes the least of itself, its three
+// neighbours in the row before (+3 straight, +4 diagonal) and its
+// neighbour before it in its own row (+3). The row before is final when a
+// row starts, so its terms go first, for every cell at once; the row's own
+// term is the only one carried along it. The same minimum as visiting each
+// cell with its four neighbours (a minimum in any order), in integers.
+void chamfer_pass(Outline *o, int step)
 {
+    const int first = step > 0 ? 0 : kGrid - 1;
+    for (int r = first; r >= 0 && r < kGrid; r += step) {
+        uint16_t *d = o->dist[r];
+        if (r != first) {
+            // The row before, final: 60000 + 4 fits in 16 bits.
+            const uint16_t *p = o->dist[r - step];
+            d[0] = std::min<uint16_t>(d[0], std::min<uint16_t>(p[0] + 3, p[1] + 4));
+            for (int c = 1; c < kGrid - 1; c++)
+                d[c] = std::min<uint16_t>(
+                    d[c],
+                    std::min<uint16_t>(p[c] + 3, std::min<uint16_t>(p[c - 1], p[c + 1]) + 4));
+            d[kGrid - 1] = std::min<uint16_t>(
+                d[kGrid - 1], std::min<uint16_t>(p[kGrid - 1] + 3, p[kGrid - 2] + 4));
+        }
+        // Then along the row, in the pass's direction.
+        if (step > 0)
+            for (int c = 1; c < kGrid; c++)
+                d[c] = std::min<uint16_t>(d[c], d[c - 1] + 3);
+        else
+            for (int c = kGrid - 2; c >= 0; c--)
+                d[c] = std::min<uint16_t>(d[c], d[c + 1] + 3);
+    }
+}
+
+// The outline's distance map of the foreground inside the box.
+void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
+{
+    Outline *o = &s->outline;
     const int kFar = 60000;
     for (int r = 0; r < kGrid; r++)
         for (int c = 0; c < kGrid; c++)
@@ -160,38 +155,35 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
     if (w <= 0 || h <= 0)
         return;
     const double centre = (x0 + x1) / 2.0;
-    for (int y = y0; y < y1; y++)
+    // Each column's cell, -1 off the canvas.
+    Vec<int> &col = s->columns;
+    col.resize((size_t)w);
+    for (int x = x0; x < x1; x++) {
+        const int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
+        col[(size_t)(x - x0)] = c >= 0 && c < kGrid ? c : -1;
+    }
+    // The outline: foreground with a 4-neighbour that is background or
+    // outside the box (mask.h's on_outline()).
+    for (int y = y0; y < y1; y++) {
+        const int r = (int)((y + 0.5 - y0) / h * kGrid);
+        if (r < 0 || r >= kGrid)
+            continue;
+        const uint8_t *row = mask + (size_t)y * stride;
+        const uint8_t *up = y > y0 ? row - stride : nullptr;
+        const uint8_t *down = y + 1 < y1 ? row + stride : nullptr;
+        uint16_t *dist = o->dist[r];
         for (int x = x0; x < x1; x++) {
-            if (!on_outline(mask, (size_t)stride, x0, y0, x1, y1, x, y))
+            if (!row[x])
                 continue;
-            int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
-            int r = (int)((y + 0.5 - y0) / h * kGrid);
-            if (c >= 0 && c < kGrid && r >= 0 && r < kGrid)
-                o->dist[r][c] = 0;
+            const bool inner = x > x0 && row[x - 1] && x + 1 < x1 && row[x + 1] && up &&
+                               up[x] && down && down[x];
+            const int c = col[(size_t)(x - x0)];
+            if (!inner && c >= 0)
+                dist[c] = 0;
         }
-    // Two passes of the 3-4 chamfer distance.
-    for (int r = 0; r < kGrid; r++)
-        for (int c = 0; c < kGrid; c++) {
-            int d = o->dist[r][c];
-            if (c > 0) d = std::min(d, o->dist[r][c - 1] + 3);
-            if (r > 0) {
-                d = std::min(d, o->dist[r - 1][c] + 3);
-                if (c > 0) d = std::min(d, o->dist[r - 1][c - 1] + 4);
-                if (c + 1 < kGrid) d = std::min(d, o->dist[r - 1][c + 1] + 4);
-            }
-            o->dist[r][c] = (uint16_t)d;
-        }
-    for (int r = kGrid - 1; r >= 0; r--)
-        for (int c = kGrid - 1; c >= 0; c--) {
-            int d = o->dist[r][c];
-            if (c + 1 < kGrid) d = std::min(d, o->dist[r][c + 1] + 3);
-            if (r + 1 < kGrid) {
-                d = std::min(d, o->dist[r + 1][c] + 3);
-                if (c + 1 < kGrid) d = std::min(d, o->dist[r + 1][c + 1] + 4);
-                if (c > 0) d = std::min(d, o->dist[r + 1][c - 1] + 4);
-            }
-            o->dist[r][c] = (uint16_t)d;
-        }
+    }
+    chamfer_pass(o, 1);
+    chamfer_pass(o, -1);
 }
 
 } // namespace
@@ -199,9 +191,9 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
 void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
 {
     if (x1 > x0 && y1 > y0)
-        mark_cells(mask, stride, x0, y0, x1, y1, s);
+        s->runs.label(mask, stride, Rect{x0, y0, x1, y1}, false);
     profile_of(mask, stride, x0, y0, x1, y1, s);
-    outline_of(mask, stride, x0, y0, x1, y1, &s->outline);
+    outline_of(mask, stride, x0, y0, x1, y1, s);
 }
 
 } // namespace ctrack

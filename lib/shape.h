@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "memory.h"
+#include "regions.h"
 
 namespace ctrack {
 
@@ -46,10 +47,10 @@ struct Shape {
     Profile profile;
     Outline outline;
     // shape_of()'s working memory, kept so that a Shape used again makes
-    // no allocation: the box's pixels (foreground, background reached from
-    // the box's border, or hole) and the flood fill's queue.
-    Vec<uint8_t> cells;
-    Vec<int> todo;
+    // no allocation: the box's runs, the background's joined to tell the
+    // background around the blob from its holes.
+    BoxRuns runs;
+    Vec<int> columns; // each column's cell of the outline's canvas
 };
 
 // The shape of the foreground (non-zero) pixels of mask inside the box

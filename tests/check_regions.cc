@@ -12,10 +12,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <vector>
 
 #include "regions.h"
+#include "shape.h"
+#include "shape_reference.h"
 
 using namespace ctrack;
 
@@ -151,6 +154,40 @@ START_TEST(outer_regions_equal_opencv)
 }
 END_TEST
 
+// The contour template's shape (its profile, fill and outline distance map)
+// from the box's runs and row-wise chamfer passes is the shape as first
+// written (per-pixel flood fill, cell-by-cell chamfer), to the bit, on
+// random boxes of random masks: blobs cut by the box, rings, holes, noise.
+START_TEST(shape_equals_the_reference)
+{
+    std::mt19937 rng(24);
+    Shape got;
+    reference::RefShape want;
+    int holes = 0;
+    for (int trial = 0; trial < 3000; trial++) {
+        const int w = std::uniform_int_distribution<int>(1, 90)(rng);
+        const int h = std::uniform_int_distribution<int>(1, 120)(rng);
+        const cv::Mat m = random_mask(rng, w, h);
+        auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        const int x0 = u(0, w - 1), y0 = u(0, h - 1);
+        const int x1 = u(x0 + 1, w), y1 = u(y0 + 1, h);
+        shape_of(m.data, w, x0, y0, x1, y1, &got);
+        reference::ref_shape_of(m.data, w, x0, y0, x1, y1, &want);
+        ck_assert_msg(std::memcmp(&got.profile, &want.profile, sizeof want.profile) == 0,
+                      "trial %d: profiles differ (fill %.9g, reference %.9g)", trial,
+                      (double)got.profile.fill, (double)want.profile.fill);
+        ck_assert_msg(std::memcmp(&got.outline, &want.outline, sizeof want.outline) == 0,
+                      "trial %d: outlines differ", trial);
+        for (uint8_t c : want.cells)
+            if (c == 0) { // a hole: background the box's border does not reach
+                holes++;
+                break;
+            }
+    }
+    ck_assert_int_gt(holes, 40);
+}
+END_TEST
+
 // An empty area gives nothing, and the buffers stay once grown.
 START_TEST(buffers_are_kept)
 {
@@ -183,6 +220,7 @@ int main(int argc, char **argv)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, closing_equals_opencv);
     tcase_add_test(tc, outer_regions_equal_opencv);
+    tcase_add_test(tc, shape_equals_the_reference);
     tcase_add_test(tc, buffers_are_kept);
     suite_add_tcase(s, tc);
     return run_suite(s);
