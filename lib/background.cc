@@ -270,14 +270,24 @@ void NoiseLevel::sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu,
                         const uint8_t *mu, const uint8_t *iv, const uint8_t *mv,
                         const uint8_t *frozen, int w)
 {
-    for (int x = 0; x < w; x += 4) {
-        if (frozen[x])
-            continue;
-        hist_y_[std::abs(iy[x] - my[x])]++;
-        if (iu)
-            hist_c_[std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
-        n_++;
+    uint32_t n = n_;
+    if (iu) {
+        for (int x = 0; x < w; x += 4) {
+            if (frozen[x])
+                continue;
+            hist_y_[n % kLanes][std::abs(iy[x] - my[x])]++;
+            hist_c_[n % kLanes][std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
+            n++;
+        }
+    } else {
+        for (int x = 0; x < w; x += 4) {
+            if (frozen[x])
+                continue;
+            hist_y_[n % kLanes][std::abs(iy[x] - my[x])]++;
+            n++;
+        }
     }
+    n_ = n;
 }
 
 namespace {
@@ -305,8 +315,16 @@ void NoiseLevel::end(double dt)
 {
     if (n_ == 0)
         return;
-    const double y = median_of(hist_y_, n_) / kMadPerSd;
-    const double c = median_of(hist_c_, n_) / kMadPerSd;
+    uint32_t hy[256], hc[256];
+    for (int v = 0; v < 256; v++) {
+        hy[v] = hc[v] = 0;
+        for (int k = 0; k < kLanes; k++) {
+            hy[v] += hist_y_[k][v];
+            hc[v] += hist_c_[k][v];
+        }
+    }
+    const double y = median_of(hy, n_) / kMadPerSd;
+    const double c = median_of(hc, n_) / kMadPerSd;
     const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
     luma += rate * (y - luma);
     chroma += rate * (c - chroma);
@@ -327,9 +345,32 @@ constexpr int kMinRatioLuma = 16;
 
 } // namespace
 
+namespace {
+
+// ceil(2^32 / d) for d in [1, 255]: n / d is (n * it) >> 32 for every n up
+// to 2^16 (the error, under n / 2^32, never reaches the next integer,
+// which is at least 1/255 away); check_background tries every n and d.
+struct Reciprocals {
+    uint64_t r[256];
+    constexpr Reciprocals() : r()
+    {
+        for (int d = 1; d < 256; d++)
+            r[d] = (((uint64_t)1 << 32) + (uint64_t)d - 1) / (uint64_t)d;
+    }
+};
+constexpr Reciprocals kReciprocal;
+
+} // namespace
+
+uint32_t divide_small(uint32_t n, uint32_t d)
+{
+    return (uint32_t)(((uint64_t)n * kReciprocal.r[d]) >> 32);
+}
+
 double Background::exposure_ratio(const Planes &img) const
 {
-    uint32_t hist[256] = {0}, n = 0;
+    // Four histograms in turn, as NoiseLevel's.
+    uint32_t hists[4][256] = {}, n = 0;
     for (int y = 0; y < h_; y += 4) {
         const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
         const uint8_t *m = old_my_.data() + (size_t)y * w_;
@@ -337,10 +378,14 @@ double Background::exposure_ratio(const Planes &img) const
         for (int x = 0; x < w_; x += 4) {
             if (f[x] || m[x] < kMinRatioLuma)
                 continue;
-            hist[std::min(255, (kRatioOne * src[x * kScale] + m[x] / 2) / m[x])]++;
+            const uint32_t q = divide_small(kRatioOne * src[x * kScale] + m[x] / 2, m[x]);
+            hists[n % 4][std::min<uint32_t>(255, q)]++;
             n++;
         }
     }
+    uint32_t hist[256];
+    for (int v = 0; v < 256; v++)
+        hist[v] = hists[0][v] + hists[1][v] + hists[2][v] + hists[3][v];
     if (n < kMinRatioSamples)
         return 1.0;
     uint32_t below = 0;

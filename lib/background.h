@@ -19,6 +19,9 @@ namespace ctrack {
 // absolute difference between the image and the background model, over a
 // grid of pixels no track stands on (most of them are background, whatever
 // moves), read as a standard deviation and smoothed over about a second.
+// n / d for d in [1, 255] and n < 2^16, by a multiplication.
+uint32_t divide_small(uint32_t n, uint32_t d);
+
 struct NoiseLevel {
     double luma = 0, chroma = 0; // standard deviations, grey levels
     void begin();
@@ -30,7 +33,11 @@ struct NoiseLevel {
     void end(double dt);
 
 private:
-    uint32_t hist_y_[256], hist_c_[256];
+    // Four histograms, taken in turn by successive samples (summed at the
+    // end): a sample then never waits on the one before it to count the
+    // same level, as neighbours in a quiet scene mostly do.
+    static constexpr int kLanes = 4;
+    uint32_t hist_y_[kLanes][256], hist_c_[kLanes][256];
     uint32_t n_ = 0;
     bool known_ = false; // the first frame's medians are taken as they are
 };

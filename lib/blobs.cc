@@ -55,8 +55,39 @@ Rect unite(const Rect &a, const Rect &b)
                 std::max(a.y1, b.y1)};
 }
 
+// The first non-zero byte of row[0, lim), or lim; eight bytes at a time.
+int first_nonzero(const uint8_t *row, int lim)
+{
+    int x = 0;
+    for (; x + 8 <= lim; x += 8) {
+        uint64_t v;
+        std::memcpy(&v, row + x, 8);
+        if (v)
+            break;
+    }
+    while (x < lim && !row[x])
+        x++;
+    return x;
+}
+
+// One past the last non-zero byte of row[lim, w), or lim.
+int end_nonzero(const uint8_t *row, int lim, int w)
+{
+    int x = w;
+    for (; x - 8 >= lim; x -= 8) {
+        uint64_t v;
+        std::memcpy(&v, row + x - 8, 8);
+        if (v)
+            break;
+    }
+    while (x > lim && !row[x - 1])
+        x--;
+    return x;
+}
+
 // The rows and columns of the mask that hold foreground: [x0, x1) x [y0,
-// y1), empty (x0 == x1) when it holds none.
+// y1), empty (x0 == x1) when it holds none. A row's ends are looked for
+// only beyond the columns already known to hold foreground.
 Rect foreground_bounds(const uint8_t *mask, int w, int h)
 {
     Rect r{w, h, 0, 0};
@@ -74,13 +105,8 @@ Rect foreground_bounds(const uint8_t *mask, int w, int h)
             any |= row[x];
         if (!any)
             continue;
-        int a = 0, b = w;
-        while (!row[a])
-            a++;
-        while (!row[b - 1])
-            b--;
-        r.x0 = std::min(r.x0, a);
-        r.x1 = std::max(r.x1, b);
+        r.x0 = first_nonzero(row, r.x0);
+        r.x1 = end_nonzero(row, r.x1, w);
         r.y0 = std::min(r.y0, y);
         r.y1 = y + 1;
     }

@@ -713,6 +713,18 @@ START_TEST(real_blobs_are_classified)
 }
 END_TEST
 
+// The exposure's division by a multiplication: every numerator up to
+// 2^16 and every divisor up to 255.
+START_TEST(small_divisions_are_exact)
+{
+    long wrong = 0;
+    for (uint32_t d = 1; d < 256; d++)
+        for (uint32_t n = 0; n < 65536; n++)
+            wrong += divide_small(n, d) != n / d;
+    ck_assert_int_eq(wrong, 0);
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -723,6 +735,7 @@ int main(int argc, char **argv)
     Suite *s = suite_create("background");
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, small_divisions_are_exact);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);
     tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
