@@ -270,24 +270,14 @@ void NoiseLevel::sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu,
                         const uint8_t *mu, const uint8_t *iv, const uint8_t *mv,
                         const uint8_t *frozen, int w)
 {
-    uint32_t n = n_;
-    if (iu) {
-        for (int x = 0; x < w; x += 4) {
-            if (frozen[x])
-                continue;
-            hist_y_[n % kLanes][std::abs(iy[x] - my[x])]++;
-            hist_c_[n % kLanes][std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
-            n++;
-        }
-    } else {
-        for (int x = 0; x < w; x += 4) {
-            if (frozen[x])
-                continue;
-            hist_y_[n % kLanes][std::abs(iy[x] - my[x])]++;
-            n++;
-        }
+    for (int x = 0; x < w; x += 4) {
+        if (frozen[x])
+            continue;
+        hist_y_[std::abs(iy[x] - my[x])]++;
+        if (iu)
+            hist_c_[std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
+        n_++;
     }
-    n_ = n;
 }
 
 namespace {
@@ -315,16 +305,8 @@ void NoiseLevel::end(double dt)
 {
     if (n_ == 0)
         return;
-    uint32_t hy[256], hc[256];
-    for (int v = 0; v < 256; v++) {
-        hy[v] = hc[v] = 0;
-        for (int k = 0; k < kLanes; k++) {
-            hy[v] += hist_y_[k][v];
-            hc[v] += hist_c_[k][v];
-        }
-    }
-    const double y = median_of(hy, n_) / kMadPerSd;
-    const double c = median_of(hc, n_) / kMadPerSd;
+    const double y = median_of(hist_y_, n_) / kMadPerSd;
+    const double c = median_of(hist_c_, n_) / kMadPerSd;
     const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
     luma += rate * (y - luma);
     chroma += rate * (c - chroma);
@@ -369,7 +351,8 @@ uint32_t divide_small(uint32_t n, uint32_t d)
 
 double Background::exposure_ratio(const Planes &img) const
 {
-    // Four histograms in turn, as NoiseLevel's.
+    // Four histograms in turn (summed at the end): a sample never waits on
+    // the one before it to count the same level, as neighbours mostly do.
     uint32_t hists[4][256] = {}, n = 0;
     for (int y = 0; y < h_; y += 4) {
         const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;

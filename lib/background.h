@@ -33,11 +33,7 @@ struct NoiseLevel {
     void end(double dt);
 
 private:
-    // Four histograms, taken in turn by successive samples (summed at the
-    // end): a sample then never waits on the one before it to count the
-    // same level, as neighbours in a quiet scene mostly do.
-    static constexpr int kLanes = 4;
-    uint32_t hist_y_[kLanes][256], hist_c_[kLanes][256];
+    uint32_t hist_y_[256], hist_c_[256];
     uint32_t n_ = 0;
     bool known_ = false; // the first frame's medians are taken as they are
 };
