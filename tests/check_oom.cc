@@ -19,6 +19,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "nnindex.h"
 #include "video.h"
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
@@ -490,6 +491,90 @@ START_TEST(steady_state_does_not_allocate)
 }
 END_TEST
 
+// With the pixels too (since 0.9.0): five times through TUD-Campus, from
+// the pixels alone and with detections, and no allocation in the last two
+// (the third may still meet a larger scratch need once: a blob, a shape).
+static void pixels_steady_state(int source)
+{
+    TudReplay replay(source);
+    ct_tracker *t = replay.t;
+    ct_track out[512];
+    long in_last_pass = 0; // the last two passes'
+    for (int pass = 0; pass < 5; pass++) {
+        char err[512];
+        video_close(replay.in);
+        video_params ip = {0, 0, CT_FORMAT_I420};
+        video_info info;
+        ck_assert_msg(video_open(tud_video, &ip, &replay.in, &info, err, sizeof err) == 0, "%s",
+                      err);
+        replay.df.cursor = 0;
+        for (int k = 1;; k++) {
+            ct_frame f;
+            const int r = video_read(replay.in, &f, err, sizeof err);
+            ck_assert_msg(r >= 0, "%s", err);
+            if (r == 0)
+                break;
+            f.timestamp_us = (int64_t)((pass * 100 + k - 1) * 1e6 / 25);
+            size_t n = 0, count;
+            const ct_detection *d = detfile_frame(&replay.df, k, &n);
+            if (source == CT_SOURCE_PIXELS)
+                d = nullptr, n = 0;
+            const long a0 = allocations;
+            const int st = ct_tracker_feed(t, &f, d, n);
+            const int sg = ct_tracker_get_tracks(t, out, 512, sizeof out[0], &count);
+            if (pass >= 3)
+                in_last_pass += allocations - a0;
+            ck_assert_int_eq(st, CT_OK);
+            ck_assert_int_eq(sg, CT_OK);
+        }
+    }
+    ck_assert_int_eq(in_last_pass, 0);
+}
+
+START_TEST(steady_state_with_pixels_does_not_allocate)
+{
+    pixels_steady_state(CT_SOURCE_PIXELS);
+    pixels_steady_state(CT_SOURCE_DETECTIONS);
+}
+END_TEST
+
+// FLANN's kd-tree (sets of more than NNIndex::kBruteForceMax points) with
+// each allocation of its build failing in turn: std::bad_alloc and an
+// empty index, never a node at address 0 (FLANN's pool takes its blocks
+// from malloc unchecked; lib/nnindex.cc routes them through a check).
+START_TEST(kd_tree_build_out_of_memory)
+{
+    const int n = 300, dim = 11;
+    std::vector<float> p((size_t)n * dim);
+    for (size_t i = 0; i < p.size(); i++)
+        p[i] = (float)((i * 7919) % 1000);
+    int failed = 0;
+    for (long k = 0;; k++) {
+        ctrack::NNIndex index;
+        fail_countdown = k;
+        bool ok = true;
+        try {
+            index.build(p.data(), n, dim);
+        } catch (const std::bad_alloc &) {
+            ok = false;
+        }
+        const bool reached = fail_countdown.load() < 0;
+        fail_countdown = -1;
+        if (ok) {
+            ck_assert(!reached); // every allocation went through
+            int found;
+            float d2;
+            index.search(p.data() + 5 * dim, 1, &found, &d2);
+            ck_assert_int_eq(found, 5);
+            break;
+        }
+        ck_assert(index.empty());
+        failed++;
+    }
+    ck_assert_int_gt(failed, 3);
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -507,6 +592,8 @@ int main(int argc, char **argv)
     tcase_add_test(tc, bgr24_out_of_memory_changes_nothing);
     tcase_add_test(tc, detections_and_pixels_out_of_memory_changes_nothing);
     tcase_add_test(tc, steady_state_does_not_allocate);
+    tcase_add_test(tc, steady_state_with_pixels_does_not_allocate);
+    tcase_add_test(tc, kd_tree_build_out_of_memory);
     tcase_add_test(tc, every_allocation_fails_detections_only);
     tcase_add_test(tc, every_allocation_fails_detections_and_pixels);
     tcase_add_test(tc, every_allocation_fails_pixels_only);
