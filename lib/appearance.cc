@@ -1,5 +1,7 @@
 #include "appearance.h"
 
+#include "cpu.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -85,7 +87,7 @@ void Template::build(const float *descriptors, bool tree)
 
 void Ddis::neighbours(const Template &p, const float *q, float eps)
 {
-    p.index.search(q, kPoints, index_, dist2_, eps);
+    p.index.search(q, kPoints, index_, dist2_, eps, &dsp_);
     std::fill(kappa_, kappa_ + kPoints, 0);
     for (int j = 0; j < kPoints; j++)
         kappa_[index_[j]]++;
@@ -93,6 +95,7 @@ void Ddis::neighbours(const Template &p, const float *q, float eps)
 
 Ddis::Ddis()
 {
+    dsp_init(&dsp_, cpu_flags());
     for (int k = 0; k <= kPoints; k++)
         exp_[k] = std::exp(1.0 - k);
 }

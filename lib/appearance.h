@@ -9,6 +9,7 @@
 
 #include "memory.h"
 
+#include "dsp.h"
 #include "nnindex.h"
 #include "planes.h"
 
@@ -52,6 +53,7 @@ public:
 
 private:
     void neighbours(const Template &p, const float *q, float eps);
+    Dsp dsp_; // this CPU's builds, as a tracker's (dsp.h)
     int index_[kPoints];
     float dist2_[kPoints];
     int kappa_[kPoints];

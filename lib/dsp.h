@@ -39,6 +39,13 @@ struct Dsp {
     // The background model (background.cc).
     void (*bg_update_row)(const BgRow &row);
     void (*bg_gather_row)(const BgGather &row);
+    // The nearest of n points (n >= 1) to the query q (dim floats), the
+    // points stored by dimension (dim rows of `stride` floats, stride a
+    // multiple of 8 and at most 128, padded with infinities): its index
+    // (the first of equals) and squared distance, summed as flann::L2 sums
+    // it (nnindex.cc).
+    int (*nn_nearest)(const float *by_dim, int stride, int dim, int n, const float *q,
+                      float *dist2);
 };
 
 // Fills every entry with the fastest build the flags (CpuFlag bits) allow.
@@ -46,6 +53,7 @@ void dsp_init(Dsp *dsp, unsigned flags);
 
 // Each module's part of dsp_init().
 void background_dsp_init(Dsp *dsp, unsigned flags);
+void nnindex_dsp_init(Dsp *dsp, unsigned flags);
 
 } // namespace ctrack
 

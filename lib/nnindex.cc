@@ -1,6 +1,15 @@
 // The only file that includes FLANN.
 #include "nnindex.h"
 
+#include "cpu.h"
+#include "dsp.h"
+
+#if defined(__GNUC__)
+#define CT_NN_INLINE inline __attribute__((always_inline))
+#else
+#define CT_NN_INLINE inline
+#endif
+
 // Every standard header FLANN includes, first: the malloc macro below must
 // reach FLANN's own code only.
 #include <algorithm>
@@ -113,27 +122,28 @@ void NNIndex::build(const float *points, int n, int dim, bool force_tree)
     dim_ = dim;
 }
 
-void NNIndex::brute_force(const float *q, int *index, float *dist2) const
+namespace {
+
+// Every point's squared distance, the points in the vector lanes (the
+// rows are padded to a multiple of 8 with points at infinity, never the
+// nearest); the dimensions summed as flann::L2 does (four at a time, each
+// group's sum added to the total, then the rest one by one), so that both
+// searches see the same distances; then the nearest. Built for the portable
+// path and for AVX2 (8 lanes): the same operations in the same order, no
+// fused multiply-add, so the same bits (tests/check_dsp.cc).
+CT_NN_INLINE int nearest(const float *__restrict by_dim, int stride, int dim, int n,
+                         const float *__restrict q, float *dist2)
 {
-    const int n = n_;
-    if (n == 0) {
-        *index = -1;
-        *dist2 = std::numeric_limits<float>::infinity();
-        return;
-    }
-    // Every point's squared distance, the points in the vector lanes (the
-    // rows of by_dim_ are padded to a multiple of kLanes with points at
-    // infinity, never the nearest); the dimensions summed as
-    // flann::L2 does (four at a time, each group's sum added to the total,
-    // then the rest one by one), so that both searches see the same
-    // distances.
-    const int stride = padded_;
-    float acc[kBruteForceMax];
+    float acc[NNIndex::kBruteForceMax];
+#if defined(__GNUC__)
+    if (stride < 8 || stride > NNIndex::kBruteForceMax || stride % 8)
+        __builtin_unreachable(); // the contract (dsp.h), which build() keeps
+#endif
     for (int i = 0; i < stride; i++)
         acc[i] = 0;
     int d = 0;
-    for (; d + 4 <= dim_; d += 4) {
-        const float *p0 = &by_dim_[(size_t)d * stride], *p1 = p0 + stride, *p2 = p1 + stride,
+    for (; d + 4 <= dim; d += 4) {
+        const float *p0 = by_dim + (size_t)d * stride, *p1 = p0 + stride, *p2 = p1 + stride,
                     *p3 = p2 + stride;
         const float q0 = q[d], q1 = q[d + 1], q2 = q[d + 2], q3 = q[d + 3];
         for (int i = 0; i < stride; i++) {
@@ -141,28 +151,102 @@ void NNIndex::brute_force(const float *q, int *index, float *dist2) const
             acc[i] += a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3;
         }
     }
-    for (; d < dim_; d++) {
-        const float *p = &by_dim_[(size_t)d * stride], qd = q[d];
+    for (; d < dim; d++) {
+        const float *p = by_dim + (size_t)d * stride, qd = q[d];
         for (int i = 0; i < stride; i++) {
             const float a = p[i] - qd;
             acc[i] += a * a;
         }
     }
-    int best = 0;
-    for (int i = 1; i < n; i++)
-        if (acc[i] < acc[best])
-            best = i;
-    *index = best;
-    *dist2 = acc[best];
+    // The least, eight lanes at a time (each lane keeps its first least),
+    // then the lanes' least, the first index of equals: the scalar scan's
+    // answer. The padding's infinities are never less.
+    constexpr int kLanes = 8;
+    float m[kLanes];
+    int at[kLanes];
+#if defined(__GNUC__)
+    typedef float F8 __attribute__((vector_size(32)));
+    typedef int32_t I8 __attribute__((vector_size(32)));
+    F8 vm;
+    I8 vat = {0, 1, 2, 3, 4, 5, 6, 7}, vi = vat;
+    std::memcpy(&vm, acc, sizeof vm);
+    for (int b = kLanes; b < stride; b += kLanes) {
+        F8 v;
+        std::memcpy(&v, acc + b, sizeof v);
+        vi += kLanes;
+        const I8 less = v < vm;
+        vm = less ? v : vm;
+        vat = less ? vi : vat;
+    }
+    std::memcpy(m, &vm, sizeof m);
+    std::memcpy(at, &vat, sizeof at);
+#else
+    for (int k = 0; k < kLanes; k++) {
+        m[k] = acc[k];
+        at[k] = k;
+    }
+    for (int b = kLanes; b < stride; b += kLanes)
+        for (int k = 0; k < kLanes; k++)
+            if (acc[b + k] < m[k]) {
+                m[k] = acc[b + k];
+                at[k] = b + k;
+            }
+#endif
+    int best = at[0];
+    float bd = m[0];
+    for (int k = 1; k < kLanes; k++)
+        if (m[k] < bd || (m[k] == bd && at[k] < best)) {
+            bd = m[k];
+            best = at[k];
+        }
+    (void)n;
+    *dist2 = bd;
+    return best;
 }
 
-void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps) const
+int nearest_c(const float *by_dim, int stride, int dim, int n, const float *q, float *dist2)
+{
+    return nearest(by_dim, stride, dim, n, q, dist2);
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) int nearest_avx2(const float *by_dim, int stride, int dim,
+                                                 int n, const float *q, float *dist2)
+{
+    return nearest(by_dim, stride, dim, n, q, dist2);
+}
+#endif
+
+} // namespace
+
+void nnindex_dsp_init(Dsp *dsp, unsigned flags)
+{
+    dsp->nn_nearest = nearest_c;
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (flags & kCpuAVX2)
+        dsp->nn_nearest = nearest_avx2;
+#endif
+    (void)flags;
+}
+
+void NNIndex::brute_force(const float *q, int *index, float *dist2, const Dsp *dsp) const
+{
+    const int n = n_;
+    if (n == 0) {
+        *index = -1;
+        *dist2 = std::numeric_limits<float>::infinity();
+        return;
+    }
+    *index = (dsp ? dsp->nn_nearest : nearest_c)(by_dim_.data(), padded_, dim_, n, q, dist2);
+}
+
+void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps,
+                     const Dsp *dsp) const
 {
     if (!impl_) {
         // Exact whatever eps asks: the comparison of all pairs is the
         // cheapest search there is at this size.
         for (int q = 0; q < nq; q++)
-            brute_force(queries + (size_t)q * dim_, index + q, dist2 + q);
+            brute_force(queries + (size_t)q * dim_, index + q, dist2 + q, dsp);
         return;
     }
     flann::KNNSimpleResultSet<float> result(1);

@@ -13,6 +13,8 @@
 
 namespace ctrack {
 
+struct Dsp;
+
 class NNIndex {
 public:
     // At most this many points are searched without a tree. An appearance
@@ -41,14 +43,16 @@ public:
     // (1 + eps) of the nearest distance. Exact searches without the tree
     // sum the squared differences in FLANN's order (L2 over groups of four)
     // and keep the first of equal distances.
-    void search(const float *queries, int nq, int *index, float *dist2, float eps = 0) const;
+    // `dsp` (null: the portable build) picks the comparison's build.
+    void search(const float *queries, int nq, int *index, float *dist2, float eps = 0,
+                const Dsp *dsp = nullptr) const;
 
     size_t memory_bytes() const;
 
 private:
     struct Impl;
     Owned<Impl> impl_;
-    void brute_force(const float *query, int *index, float *dist2) const;
+    void brute_force(const float *query, int *index, float *dist2, const Dsp *dsp) const;
     Vec<float> points_;
     // Without the tree: the points by dimension (dim_ rows of n_ floats),
     // for comparing a query with all of them at once.

@@ -196,6 +196,69 @@ START_TEST(frames_match_the_portable_build)
 END_TEST
 
 // The mask takes features away, and back.
+// The nearest-neighbour search's distances (nnindex.cc): random points and
+// queries, every dimension up to 20 (the groups of four and the rest),
+// strides up to 128 floats (the most the index stores), values over a descriptor's range and tiny ones
+// (rounding), to the bit.
+START_TEST(nn_distances_match_the_portable_build)
+{
+    Dsp ref;
+    dsp_init(&ref, 0);
+    for (unsigned flags : runnable()) {
+        Dsp d;
+        dsp_init(&d, flags);
+        for (int trial = 0; trial < 300; trial++) {
+            const int dim = 1 + trial % 20, stride = 8 * (1 + trial % 16);
+            const float scale = trial % 5 == 0 ? 1e-3f : 255.0f;
+            Vec<float> pts((size_t)dim * stride), q(dim);
+            for (float &v : pts)
+                v = scale * next_byte() / 255.0f + next_byte() / 65536.0f;
+            for (float &v : q)
+                v = scale * next_byte() / 255.0f;
+            // n points, the rest padding; some points repeated (ties).
+            const int n = stride - next_byte() % 8;
+            for (int i = n; i < stride; i++)
+                for (int k = 0; k < dim; k++)
+                    pts[(size_t)k * stride + i] = INFINITY;
+            if (trial % 4 == 1)
+                for (int k = 0; k < dim; k++)
+                    pts[(size_t)k * stride + n - 1] = pts[(size_t)k * stride + n / 2];
+            float da, db;
+            const int ia = ref.nn_nearest(pts.data(), stride, dim, n, q.data(), &da);
+            const int ib = d.nn_nearest(pts.data(), stride, dim, n, q.data(), &db);
+            ck_assert_msg(ia == ib && std::memcmp(&da, &db, sizeof da) == 0,
+                          "flags 0x%x, dim %d, stride %d: point %d at %.9g, the portable "
+                          "build's %d at %.9g", flags, dim, stride, ib, (double)db, ia,
+                          (double)da);
+            // And the portable build is the scan for the first least.
+            int want = 0;
+            float wd = INFINITY;
+            for (int i = 0; i < n; i++) {
+                float s2 = 0;
+                int k = 0;
+                for (; k + 4 <= dim; k += 4) {
+                    float g = 0;
+                    for (int j = k; j < k + 4; j++) {
+                        const float t = pts[(size_t)j * stride + i] - q[j];
+                        g = j == k ? t * t : g + t * t;
+                    }
+                    s2 += g;
+                }
+                for (; k < dim; k++) {
+                    const float t = pts[(size_t)k * stride + i] - q[k];
+                    s2 += t * t;
+                }
+                if (s2 < wd) {
+                    wd = s2;
+                    want = i;
+                }
+            }
+            ck_assert_int_eq(ia, want);
+        }
+    }
+}
+END_TEST
+
 START_TEST(mask_forces_the_portable_path)
 {
     set_cpu_mask(~0u);
@@ -220,6 +283,7 @@ int main()
     tcase_add_test(tc, rows_match_the_portable_build);
     tcase_add_test(tc, frames_match_the_portable_build);
     tcase_add_test(tc, background_rows_match_the_portable_build);
+    tcase_add_test(tc, nn_distances_match_the_portable_build);
     tcase_add_test(tc, mask_forces_the_portable_path);
     suite_add_tcase(s, tc);
     return run_suite(s);
