@@ -99,6 +99,40 @@ constexpr RegionCells make_region_cells()
 
 constexpr RegionCells kRegionCells = make_region_cells();
 
+// Silhouettes whose region cells repeat an earlier one's, in the same
+// order: they would get the same distances, and classify() keeps the first
+// of equals, so it skips them (lib/silhouettes.inc repeats many, see
+// docs/notes/pixels.md).
+struct Repeats {
+    bool of_earlier[kSilhouettes];
+    int distinct;
+};
+
+constexpr bool same_cells(int s, int t)
+{
+    for (int g = 0; g <= kRegions; g++)
+        if (kRegionCells.start[s][g] != kRegionCells.start[t][g])
+            return false;
+    for (int k = 0; k < kRegionCells.start[s][kRegions]; k++)
+        if (kRegionCells.cell[s][k] != kRegionCells.cell[t][k])
+            return false;
+    return true;
+}
+
+constexpr Repeats make_repeats()
+{
+    Repeats r{};
+    for (int s = 0; s < kSilhouettes; s++) {
+        r.of_earlier[s] = false;
+        for (int t = 0; t < s && !r.of_earlier[s]; t++)
+            r.of_earlier[s] = same_cells(s, t);
+        r.distinct += !r.of_earlier[s];
+    }
+    return r;
+}
+
+constexpr Repeats kRepeats = make_repeats();
+
 // The head's rows (the median of eight rows is the fifth smallest: an
 // upper median).
 constexpr int kHeadRows = kZones[kHead].row1 - kZones[kHead].row0;
@@ -107,6 +141,16 @@ const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "bac
                                       "abdomen", "buttocks", "upper limbs", "lower limbs"};
 
 } // namespace
+
+int library_silhouettes()
+{
+    return kSilhouettes;
+}
+
+int distinct_silhouettes()
+{
+    return kRepeats.distinct;
+}
 
 const char *region_name(int r)
 {
@@ -157,6 +201,8 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
     float best_total = INFINITY;
     const uint16_t *dist = &shape.outline.dist[0][0];
     for (int s = 0; s < kSilhouettes; s++) {
+        if (kRepeats.of_earlier[s])
+            continue;
         // Sums of chamfer units, exact in integers.
         uint32_t sum[kRegions] = {0};
         int n[kRegions] = {0};

@@ -22,6 +22,10 @@ enum Region {
 };
 
 const char *region_name(int r);
+// How many silhouettes the library has, and how many of them classify()
+// compares (the others repeat one of them, cell for cell).
+int library_silhouettes();
+int distinct_silhouettes();
 
 // At least this many regions must vote for a score.
 constexpr int kMinVoters = 5;

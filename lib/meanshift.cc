@@ -125,33 +125,53 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     const int32_t *cols = columns_.data();
     size_t n = 0;
     uint64_t total = 0;
+    // The columns inside the ellipse on a row are one run: the column term
+    // falls to the centre and rises after it.
+    int centre = 0;
+    for (int i = 1; i < ncols; i++)
+        if (cols[i] < cols[centre])
+            centre = i;
     for (int y = y0; y <= y1; y += s) {
         int64_t dy = ((int64_t)y << 8) - cy8;
         const int32_t row = kernel_term(dy, hh2);
         if (row >= kKernelOne)
             continue;
+        int i0 = centre, i1 = centre + 1;
+        if (row + cols[centre] >= kKernelOne)
+            continue;
+        while (i0 > 0 && row + cols[i0 - 1] < kKernelOne)
+            i0--;
+        while (i1 < ncols && row + cols[i1] < kKernelOne)
+            i1++;
         const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
-        const uint8_t *urow = img.color ? img.u + (size_t)(y >> 1) * img.u_stride : nullptr;
-        const uint8_t *vrow = img.color ? img.v + (size_t)(y >> 1) * img.v_stride : nullptr;
-        const int cstep = img.c_step;
-        for (int i = 0; i < ncols; i++) {
-            const int32_t r2 = row + cols[i];
-            if (r2 >= kKernelOne)
-                continue;
-            const int x = x0 + i * s;
-            int bin;
-            if (urow) {
+        // A bin that was empty joins the touched list; the entry is written
+        // anyway and kept only then (no branch on the pixel's colour).
+        if (img.color) {
+            const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
+            const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
+            const int cstep = img.c_step;
+            for (int i = i0; i < i1; i++) {
+                const int x = x0 + i * s;
                 const int c = (x >> 1) * cstep;
-                bin = ((yrow[x] >> 5) << 6) | ((urow[c] >> 5) << 3) | (vrow[c] >> 5);
-            } else {
-                bin = yrow[x] >> 3;
+                const int bin = ((yrow[x] >> 5) << 6) | ((urow[c] >> 5) << 3) | (vrow[c] >> 5);
+                touched[n_touched] = (uint16_t)bin;
+                n_touched += hist[bin] == 0;
+                const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i])); // Epanechnikov
+                hist[bin] += k;
+                total += k;
+                out[n++] = Sample{(int16_t)x, (int16_t)y, (uint16_t)bin};
             }
-            if (hist[bin] == 0)
-                touched[n_touched++] = (uint16_t)bin;
-            const uint32_t k = (uint32_t)(kKernelOne - r2); // Epanechnikov profile
-            hist[bin] += k;
-            total += k;
-            out[n++] = Sample{(int16_t)x, (int16_t)y, (uint16_t)bin};
+        } else {
+            for (int i = i0; i < i1; i++) {
+                const int x = x0 + i * s;
+                const int bin = yrow[x] >> 3;
+                touched[n_touched] = (uint16_t)bin;
+                n_touched += hist[bin] == 0;
+                const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i]));
+                hist[bin] += k;
+                total += k;
+                out[n++] = Sample{(int16_t)x, (int16_t)y, (uint16_t)bin};
+            }
         }
     }
     n_samples_ = n;

@@ -145,7 +145,7 @@ private:
     size_t n_samples_ = 0;
     Vec<int32_t> columns_;
     uint32_t hist_[kHistBins] = {};
-    uint16_t touched_[kHistBins];
+    uint16_t touched_[kHistBins + 1]; // one spare: sample() writes before it counts
     int n_touched_ = 0;
 };
 

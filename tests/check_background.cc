@@ -713,6 +713,15 @@ START_TEST(real_blobs_are_classified)
 }
 END_TEST
 
+// classify() compares each distinct silhouette once: the library repeats
+// many, cell for cell (the frontal view's, gait phases k and 4 - k).
+START_TEST(repeated_silhouettes_are_compared_once)
+{
+    ck_assert_int_gt(distinct_silhouettes(), 10);
+    ck_assert_int_lt(distinct_silhouettes(), library_silhouettes());
+}
+END_TEST
+
 // The exposure's division by a multiplication: every numerator up to
 // 2^16 and every divisor up to 255.
 START_TEST(small_divisions_are_exact)
@@ -736,6 +745,7 @@ int main(int argc, char **argv)
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, small_divisions_are_exact);
+    tcase_add_test(tc, repeated_silhouettes_are_compared_once);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);
     tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
