@@ -90,7 +90,7 @@ void MeanShift::clear_hist()
 uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, double hh)
 {
     clear_hist();
-    n_samples_ = 0;
+    n_runs_ = 0;
     if (!(hw >= 1 && hh >= 1))
         return 0;
     hw = std::min(hw, kMaxHalfSide);
@@ -116,14 +116,18 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     // The loop works on locals, which the compiler keeps in registers: the
     // members would be reloaded after every store.
     const int nrows = (y1 - y0) / s + 1;
-    if (samples_.size() < (size_t)nrows * ncols)
-        samples_.resize((size_t)nrows * ncols); // grows once, then keeps its size
-    Sample *out = samples_.data();
+    if (bins_.size() < (size_t)nrows * ncols)
+        bins_.resize((size_t)nrows * ncols); // grows once, then keeps its size
+    if (runs_.size() < (size_t)nrows)
+        runs_.resize((size_t)nrows);
+    uint16_t *out = bins_.data();
+    Run *runs = runs_.data();
+    size_t n_runs = 0;
+    step_ = s;
     uint32_t *hist = hist_;
     uint16_t *touched = touched_;
     int n_touched = n_touched_;
     const int32_t *cols = columns_.data();
-    size_t n = 0;
     uint64_t total = 0;
     // The columns inside the ellipse on a row are one run: the column term
     // falls to the centre and rises after it.
@@ -144,37 +148,40 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
         while (i1 < ncols && row + cols[i1] < kKernelOne)
             i1++;
         const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
+        runs[n_runs++] = Run{x0 + i0 * s, y, i1 - i0};
         // A bin that was empty joins the touched list; the entry is written
         // anyway and kept only then (no branch on the pixel's colour).
+        uint32_t row_total = 0;
         if (img.color) {
             const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
             const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
-            const int cstep = img.c_step;
-            for (int i = i0; i < i1; i++) {
-                const int x = x0 + i * s;
-                const int c = (x >> 1) * cstep;
-                const int bin = ((yrow[x] >> 5) << 6) | ((urow[c] >> 5) << 3) | (vrow[c] >> 5);
+            const size_t cstep = (size_t)img.c_step;
+            const uint8_t *py = yrow + x0 + (size_t)i0 * s;
+            for (int i = i0, x = x0 + i0 * s; i < i1; i++, x += s, py += s) {
+                const size_t c = (size_t)(x >> 1) * cstep;
+                const int bin = ((*py >> 5) << 6) | ((urow[c] >> 5) << 3) | (vrow[c] >> 5);
                 touched[n_touched] = (uint16_t)bin;
                 n_touched += hist[bin] == 0;
                 const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i])); // Epanechnikov
                 hist[bin] += k;
-                total += k;
-                out[n++] = Sample{(int16_t)x, (int16_t)y, (uint16_t)bin};
+                row_total += k;
+                *out++ = (uint16_t)bin;
             }
         } else {
-            for (int i = i0; i < i1; i++) {
-                const int x = x0 + i * s;
-                const int bin = yrow[x] >> 3;
+            const uint8_t *py = yrow + x0 + (size_t)i0 * s;
+            for (int i = i0; i < i1; i++, py += s) {
+                const int bin = *py >> 3;
                 touched[n_touched] = (uint16_t)bin;
                 n_touched += hist[bin] == 0;
                 const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i]));
                 hist[bin] += k;
-                total += k;
-                out[n++] = Sample{(int16_t)x, (int16_t)y, (uint16_t)bin};
+                row_total += k;
+                *out++ = (uint16_t)bin;
             }
         }
+        total += row_total;
     }
-    n_samples_ = n;
+    n_runs_ = n_runs;
     n_touched_ = n_touched;
     return total;
 }
@@ -332,13 +339,23 @@ bool MeanShift::centroid(uint64_t total, const ColorModel &m, double *nx, double
         uint32_t sp = std::max<uint32_t>(1, kSqrt[probability_q16(hist_[b], inv)]);
         weight[b] = (uint32_t)std::min<uint64_t>(UINT32_MAX, ((uint64_t)kSqrt[m.qw[b]] << 16) / sp);
     }
+    // Sums of weights and of weighted positions, row by row: on a row the
+    // samples are at x, x + step, ..., so the sum of w x is x times the
+    // sum of w plus step times the sum of w i; all exact in integers.
     int64_t sw = 0, sx = 0, sy = 0;
-    for (size_t i = 0; i < n_samples_; i++) {
-        const Sample &s = samples_[i];
-        uint32_t wt = weight[s.bin];
-        sw += wt;
-        sx += (int64_t)wt * s.x;
-        sy += (int64_t)wt * s.y;
+    const uint16_t *bins = bins_.data();
+    for (size_t r = 0; r < n_runs_; r++) {
+        const Run &run = runs_[r];
+        int64_t rw = 0, ri = 0;
+        for (int i = 0; i < run.count; i++) {
+            const uint32_t wt = weight[bins[i]];
+            rw += wt;
+            ri += (int64_t)wt * i;
+        }
+        bins += run.count;
+        sw += rw;
+        sx += rw * run.x + ri * step_;
+        sy += rw * run.y;
     }
     if (sw == 0)
         return false;

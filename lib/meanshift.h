@@ -111,16 +111,18 @@ public:
 
     size_t memory_bytes() const
     {
-        return samples_.capacity() * sizeof(Sample) + columns_.capacity() * sizeof(int32_t);
+        return bins_.capacity() * sizeof(uint16_t) + runs_.capacity() * sizeof(Run) +
+               columns_.capacity() * sizeof(int32_t);
     }
 
 private:
-    struct Sample {
-        int16_t x, y;
-        uint16_t bin;
+    // The samples of one row: at x, x + step, ... (count of them), row y;
+    // their bins are the next `count` of bins_.
+    struct Run {
+        int32_t x, y, count;
     };
-    // Samples the ellipse inscribed in the box: fills samples_ and the raw
-    // kernel-weighted histogram hist_; returns its total.
+    // Samples the ellipse inscribed in the box: fills runs_, bins_ and the
+    // raw kernel-weighted histogram hist_; returns its total.
     uint64_t sample(const Planes &img, double cx, double cy, double hw, double hh);
     // The raw histogram as Q16 probabilities into out (all bins).
     void normalise(uint64_t total, uint16_t *out) const;
@@ -141,8 +143,11 @@ private:
                                    double h, ColorModel *m);
     void clear_hist();
 
-    Vec<Sample> samples_; // the first n_samples_ are this window's
-    size_t n_samples_ = 0;
+    // This window's samples, row by row: n_runs_ runs, their bins in order.
+    Vec<Run> runs_;
+    Vec<uint16_t> bins_;
+    size_t n_runs_ = 0;
+    int step_ = 1;
     Vec<int32_t> columns_;
     uint32_t hist_[kHistBins] = {};
     uint16_t touched_[kHistBins + 1]; // one spare: sample() writes before it counts
