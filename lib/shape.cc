@@ -100,14 +100,8 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         n += 2;
         area += (double)count / h / kRows;
     }
-    if (n == 0)
-        return;
-    // The hull's left side is a convex function of y, its right side a
-    // concave one.
-    float lh[2 * kRows][2], rh[2 * kRows][2];
-    const int nl = hull_side(left, n, 1, lh), nr = hull_side(right, n, -1, rh);
-    const float hull = area_between(lh, nl, rh, nr);
-    p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
+    if (n > 0)
+        p->fill = hull_fill(left, right, n, area);
 }
 
 // One pass of the 3-4 chamfer distance over the rows in the order of
@@ -187,6 +181,16 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
 }
 
 } // namespace
+
+float hull_fill(const float (*left)[2], const float (*right)[2], int n, double area)
+{
+    // The hull's left side is a convex function of y, its right side a
+    // concave one.
+    float lh[2 * kRows][2], rh[2 * kRows][2];
+    const int nl = hull_side(left, n, 1, lh), nr = hull_side(right, n, -1, rh);
+    const float hull = area_between(lh, nl, rh, nr);
+    return hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
+}
 
 void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s)
 {

@@ -59,6 +59,11 @@ struct Shape {
 // shape keeps its proportions), and the outline's distance map.
 void shape_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1, Shape *s);
 
+// How much of their convex hull the profile's row strips fill: the strips'
+// ends (n points a side, (y, x) in box heights, top row first; n at most
+// 2 * kRows) and their area, holes included (shape_of()'s fill).
+float hull_fill(const float (*left)[2], const float (*right)[2], int n, double area);
+
 } // namespace ctrack
 
 #endif

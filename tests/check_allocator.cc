@@ -23,17 +23,6 @@
 #include "detfile.h"
 #include "video.h"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define INTERPOSE_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define INTERPOSE_MALLOC 0
-#endif
-#endif
-#ifndef INTERPOSE_MALLOC
-#define INTERPOSE_MALLOC 1
-#endif
-
 static const char *data_dir;
 static const char *tud_video;
 
@@ -52,59 +41,14 @@ static void note_allocation()
     }
 }
 
-#if INTERPOSE_MALLOC
-extern "C" {
-void *__libc_malloc(size_t);
-void *__libc_calloc(size_t, size_t);
-void *__libc_realloc(void *, size_t);
-void *__libc_memalign(size_t, size_t);
-void __libc_free(void *);
-void *malloc(size_t n)
+// The hook of alloc_hooks.h: every allocation goes through, counted.
+static bool allocation_allowed(bool)
 {
     note_allocation();
-    return __libc_malloc(n);
+    return true;
 }
-void *calloc(size_t n, size_t k)
-{
-    note_allocation();
-    return __libc_calloc(n, k);
-}
-void *realloc(void *p, size_t n)
-{
-    note_allocation();
-    return __libc_realloc(p, n);
-}
-void free(void *p) { __libc_free(p); }
-void *memalign(size_t a, size_t n)
-{
-    note_allocation();
-    return __libc_memalign(a, n);
-}
-void *aligned_alloc(size_t a, size_t n) { return memalign(a, n); }
-int posix_memalign(void **out, size_t a, size_t n)
-{
-    void *p = memalign(a, n);
-    if (!p)
-        return ENOMEM;
-    *out = p;
-    return 0;
-}
-}
-#endif
 
-void *operator new(std::size_t n)
-{
-    note_allocation();
-    void *p = std::malloc(n ? n : 1);
-    if (!p)
-        throw std::bad_alloc();
-    return p;
-}
-void *operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void *p) noexcept { std::free(p); }
-void operator delete[](void *p) noexcept { std::free(p); }
-void operator delete(void *p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+#include "alloc_hooks.h"
 
 namespace {
 

@@ -22,17 +22,6 @@
 #include "nnindex.h"
 #include "video.h"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define INTERPOSE_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define INTERPOSE_MALLOC 0
-#endif
-#endif
-#ifndef INTERPOSE_MALLOC
-#define INTERPOSE_MALLOC 1
-#endif
-
 static const char *data_dir;
 static const char *tud_video; // TUD-Campus as Y4M (made by the build)
 // The allocation that fails (0: the next one); -1: none. Counted down by
@@ -58,61 +47,18 @@ static bool allowed()
     return true;
 }
 
-#if INTERPOSE_MALLOC
-extern "C" {
-void *__libc_malloc(size_t);
-void *__libc_calloc(size_t, size_t);
-void *__libc_realloc(void *, size_t);
-void *__libc_memalign(size_t, size_t);
-void __libc_free(void *);
+// The hook of alloc_hooks.h: the countdown's, and failures through malloc
+// counted apart.
+static bool allocation_allowed(bool through_malloc)
+{
+    if (allowed())
+        return true;
+    if (through_malloc)
+        failed_mallocs++;
+    return false;
+}
 
-static void *refuse()
-{
-    failed_mallocs++;
-    errno = ENOMEM;
-    return nullptr;
-}
-void *malloc(size_t n) { return allowed() ? __libc_malloc(n) : refuse(); }
-void *calloc(size_t n, size_t k) { return allowed() ? __libc_calloc(n, k) : refuse(); }
-void *realloc(void *p, size_t n)
-{
-    if (!p)
-        return malloc(n);
-    return allowed() ? __libc_realloc(p, n) : refuse();
-}
-void free(void *p) { __libc_free(p); }
-void *memalign(size_t a, size_t n) { return allowed() ? __libc_memalign(a, n) : refuse(); }
-void *aligned_alloc(size_t a, size_t n) { return memalign(a, n); }
-int posix_memalign(void **out, size_t a, size_t n)
-{
-    void *p = memalign(a, n);
-    if (!p)
-        return ENOMEM;
-    *out = p;
-    return 0;
-}
-}
-static void *raw_malloc(size_t n) { return __libc_malloc(n); }
-static void raw_free(void *p) { __libc_free(p); }
-#else
-static void *raw_malloc(size_t n) { return std::malloc(n); }
-static void raw_free(void *p) { std::free(p); }
-#endif
-
-void *operator new(std::size_t n)
-{
-    if (!allowed())
-        throw std::bad_alloc();
-    void *p = raw_malloc(n ? n : 1);
-    if (!p)
-        throw std::bad_alloc();
-    return p;
-}
-void *operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void *p) noexcept { raw_free(p); }
-void operator delete[](void *p) noexcept { raw_free(p); }
-void operator delete(void *p, std::size_t) noexcept { raw_free(p); }
-void operator delete[](void *p, std::size_t) noexcept { raw_free(p); }
+#include "alloc_hooks.h"
 
 static std::vector<ct_track> tracks_of(ct_tracker *t)
 {

@@ -1,5 +1,8 @@
 // The contour template's shape (lib/shape.cc) as first written, for
-// tests/check_regions.cc to hold the faster one to it, to the bit.
+// tests/check_regions.cc to hold the faster one to it, to the bit: the
+// per-pixel flood fill of the background the box's border reaches, the
+// outline pixel by pixel, the chamfer distance cell by cell (the convex
+// hull is the library's, unchanged).
 #ifndef CTRACK_TESTS_SHAPE_REFERENCE_H
 #define CTRACK_TESTS_SHAPE_REFERENCE_H
 
@@ -24,48 +27,6 @@ struct RefShape {
 };
 
 namespace {
-
-// Twice the signed area of the triangle o, a, b: positive when o, a, b turn
-// counter-clockwise in axes (first coordinate, second coordinate).
-float cross(const float *o, const float *a, const float *b)
-{
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-
-// One side of the convex hull of the points (y, x), in order of y (the
-// monotone chain): with sign 1 the side of the smallest x (the hull's left
-// edge at each y), with sign -1 the side of the largest. Returns the number
-// of points kept in out.
-int hull_side(const float (*pts)[2], int n, float sign, float (*out)[2])
-{
-    int k = 0;
-    for (int i = 0; i < n; i++) {
-        while (k >= 2 && sign * cross(out[k - 2], out[k - 1], pts[i]) <= 0)
-            k--;
-        out[k][0] = pts[i][0];
-        out[k][1] = pts[i][1];
-        k++;
-    }
-    return k;
-}
-
-// The area of the polygon that runs down one chain and back up the other
-// (both from the top row to the bottom one), by the shoelace formula; the
-// order of the two coordinates does not matter.
-float area_between(const float (*l)[2], int nl, const float (*r)[2], int nr)
-{
-    double a = 0;
-    auto edge = [&](const float *p, const float *q) {
-        a += (double)p[0] * q[1] - (double)q[0] * p[1];
-    };
-    for (int i = 0; i + 1 < nl; i++)
-        edge(l[i], l[i + 1]);
-    edge(l[nl - 1], r[nr - 1]);
-    for (int i = nr - 1; i > 0; i--)
-        edge(r[i], r[i - 1]);
-    edge(r[0], l[0]);
-    return (float)(std::fabs(a) / 2);
-}
 
 enum Cell : uint8_t { kHole = 0, kForeground = 1, kOutside = 2 };
 
@@ -154,14 +115,8 @@ void profile_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         n += 2;
         area += (double)count / h / kRows;
     }
-    if (n == 0)
-        return;
-    // The hull's left side is a convex function of y, its right side a
-    // concave one.
-    float lh[2 * kRows][2], rh[2 * kRows][2];
-    const int nl = hull_side(left, n, 1, lh), nr = hull_side(right, n, -1, rh);
-    const float hull = area_between(lh, nl, rh, nr);
-    p->fill = hull > 0 ? std::min(1.0f, (float)(area / hull)) : 0;
+    if (n > 0)
+        p->fill = hull_fill(left, right, n, area);
 }
 
 // The outline's distance map of the foreground inside the box.
