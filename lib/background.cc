@@ -581,15 +581,12 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
         y = std::min(std::max(y, 0), h - 1);
         return (int)my_[(size_t)y * w + x];
     };
-    for (int y = y0; y < y1; y++)
-        for (int x = x0; x < x1; x++) {
-            if (!on_outline(blob, (size_t)w, x0, y0, x1, y1, x, y))
-                continue;
-            const uint8_t *g = gain_lut_;
-            *frame += std::abs(luma_at(img, g, w, h, x + 1, y) - luma_at(img, g, w, h, x - 1, y)) +
-                      std::abs(luma_at(img, g, w, h, x, y + 1) - luma_at(img, g, w, h, x, y - 1));
-            *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
-        }
+    const uint8_t *g = gain_lut_;
+    for_each_outline(blob, (size_t)w, x0, y0, x1, y1, [&](int x, int y) {
+        *frame += std::abs(luma_at(img, g, w, h, x + 1, y) - luma_at(img, g, w, h, x - 1, y)) +
+                  std::abs(luma_at(img, g, w, h, x, y + 1) - luma_at(img, g, w, h, x, y - 1));
+        *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
+    });
 }
 
 void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)

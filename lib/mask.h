@@ -25,6 +25,24 @@ inline bool on_outline(const uint8_t *mask, size_t stride, int x0, int y0, int x
     return fg(x, y) && !(fg(x - 1, y) && fg(x + 1, y) && fg(x, y - 1) && fg(x, y + 1));
 }
 
+// Calls f(x, y) for each pixel of the outline inside the box, row by row:
+// what on_outline() says pixel by pixel, with each row's neighbours read in
+// place (tests/check_regions.cc compares the two).
+template <typename F>
+inline void for_each_outline(const uint8_t *mask, size_t stride, int x0, int y0, int x1, int y1,
+                             F &&f)
+{
+    for (int y = y0; y < y1; y++) {
+        const uint8_t *row = mask + (size_t)y * stride;
+        const uint8_t *up = y > y0 ? row - stride : nullptr;
+        const uint8_t *down = y + 1 < y1 ? row + stride : nullptr;
+        for (int x = x0; x < x1; x++)
+            if (row[x] && !(x > x0 && row[x - 1] && x + 1 < x1 && row[x + 1] && up && up[x] &&
+                            down && down[x]))
+                f(x, y);
+    }
+}
+
 } // namespace ctrack
 
 #endif

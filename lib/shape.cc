@@ -156,26 +156,13 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         const int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
         col[(size_t)(x - x0)] = c >= 0 && c < kGrid ? c : -1;
     }
-    // The outline: foreground with a 4-neighbour that is background or
-    // outside the box (mask.h's on_outline()).
-    for (int y = y0; y < y1; y++) {
+    // The outline (mask.h), each pixel in its cell of the canvas.
+    for_each_outline(mask, (size_t)stride, x0, y0, x1, y1, [&](int x, int y) {
         const int r = (int)((y + 0.5 - y0) / h * kGrid);
-        if (r < 0 || r >= kGrid)
-            continue;
-        const uint8_t *row = mask + (size_t)y * stride;
-        const uint8_t *up = y > y0 ? row - stride : nullptr;
-        const uint8_t *down = y + 1 < y1 ? row + stride : nullptr;
-        uint16_t *dist = o->dist[r];
-        for (int x = x0; x < x1; x++) {
-            if (!row[x])
-                continue;
-            const bool inner = x > x0 && row[x - 1] && x + 1 < x1 && row[x + 1] && up &&
-                               up[x] && down && down[x];
-            const int c = col[(size_t)(x - x0)];
-            if (!inner && c >= 0)
-                dist[c] = 0;
-        }
-    }
+        const int c = col[(size_t)(x - x0)];
+        if (r >= 0 && r < kGrid && c >= 0)
+            o->dist[r][c] = 0;
+    });
     chamfer_pass(o, 1);
     chamfer_pass(o, -1);
 }

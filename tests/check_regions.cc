@@ -188,6 +188,34 @@ START_TEST(shape_equals_the_reference)
 }
 END_TEST
 
+// The outline row by row (for_each_outline) is on_outline()'s, pixel by
+// pixel and in raster order, on random boxes of random masks.
+START_TEST(outline_rows_equal_the_pixel_test)
+{
+    std::mt19937 rng(25);
+    long pixels = 0;
+    for (int trial = 0; trial < 2000; trial++) {
+        const int w = std::uniform_int_distribution<int>(1, 80)(rng);
+        const int h = std::uniform_int_distribution<int>(1, 80)(rng);
+        const cv::Mat m = random_mask(rng, w, h);
+        auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        const int x0 = u(0, w - 1), y0 = u(0, h - 1);
+        const int x1 = u(x0 + 1, w), y1 = u(y0 + 1, h);
+        std::vector<int> want, got;
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++)
+                if (on_outline(m.data, (size_t)w, x0, y0, x1, y1, x, y))
+                    want.push_back(y * w + x);
+        for_each_outline(m.data, (size_t)w, x0, y0, x1, y1,
+                         [&](int x, int y) { got.push_back(y * w + x); });
+        ck_assert_msg(got == want, "trial %d: %zu outline pixels, the pixel test %zu", trial,
+                      got.size(), want.size());
+        pixels += (long)want.size();
+    }
+    ck_assert_int_gt(pixels, 20000);
+}
+END_TEST
+
 // An empty area gives nothing, and the buffers stay once grown.
 START_TEST(buffers_are_kept)
 {
@@ -221,6 +249,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, closing_equals_opencv);
     tcase_add_test(tc, outer_regions_equal_opencv);
     tcase_add_test(tc, shape_equals_the_reference);
+    tcase_add_test(tc, outline_rows_equal_the_pixel_test);
     tcase_add_test(tc, buffers_are_kept);
     suite_add_tcase(s, tc);
     return run_suite(s);
