@@ -182,9 +182,11 @@ void BlobFinder::clean(const uint8_t *mask, int w, int h)
 {
     Impl &m = *impl_;
     if (m.w != w || m.h != h || m.clean.size() != (size_t)w * h) {
+        // No size until the new mask stands: after a failed allocation the
+        // next call makes it anew, whatever its size (the old mask's
+        // foreground is not cleared).
         m.area = Rect{0, 0, 0, 0};
-        // Sized first, then the size recorded: a failed allocation leaves
-        // the old mask and size together.
+        m.w = m.h = 0;
         m.clean.assign((size_t)w * h, 0);
         m.w = w;
         m.h = h;

@@ -166,6 +166,9 @@ int ct_frame_default(ct_frame *frame, size_t size)
     return CT_OK;
 }
 
+// A host's allocator aligns as malloc does (ct_allocator's contract).
+static_assert(alignof(ct_tracker) <= alignof(std::max_align_t), "a tracker's alignment");
+
 int ct_tracker_create(const ct_config *cfg, ct_tracker **out)
 {
     return ct_tracker_create_with_allocator(cfg, nullptr, out);

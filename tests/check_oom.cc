@@ -9,6 +9,7 @@
 
 #include "common.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -19,6 +20,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "blobs.h"
 #include "nnindex.h"
 #include "video.h"
 
@@ -521,6 +523,33 @@ START_TEST(kd_tree_build_out_of_memory)
 }
 END_TEST
 
+// The blob finder's cleaned mask when the frame's size changes and the new
+// mask cannot be had: the next frame, back at the old size, starts from a
+// clean mask (the old one's foreground must not linger in it).
+START_TEST(mask_resize_out_of_memory)
+{
+    ctrack::BlobFinder blobs;
+    std::vector<uint8_t> a(100 * 80, 0), b(200 * 160, 0), empty(100 * 80, 0);
+    for (int y = 20; y < 60; y++)
+        for (int x = 30; x < 50; x++)
+            a[(size_t)y * 100 + x] = 255;
+    blobs.clean(a.data(), 100, 80);
+    ck_assert_int_gt(std::count(blobs.cleaned(), blobs.cleaned() + 100 * 80, 255), 0);
+    fail_countdown = 0;
+    bool threw = false;
+    try {
+        blobs.clean(b.data(), 200, 160);
+    } catch (const std::bad_alloc &) {
+        threw = true;
+    }
+    fail_countdown = -1;
+    ck_assert(threw);
+    blobs.clean(empty.data(), 100, 80);
+    ck_assert_int_eq(blobs.width(), 100);
+    ck_assert_int_eq(std::count(blobs.cleaned(), blobs.cleaned() + 100 * 80, 0), 100 * 80);
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -540,6 +569,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, steady_state_does_not_allocate);
     tcase_add_test(tc, steady_state_with_pixels_does_not_allocate);
     tcase_add_test(tc, kd_tree_build_out_of_memory);
+    tcase_add_test(tc, mask_resize_out_of_memory);
     tcase_add_test(tc, every_allocation_fails_detections_only);
     tcase_add_test(tc, every_allocation_fails_detections_and_pixels);
     tcase_add_test(tc, every_allocation_fails_pixels_only);
