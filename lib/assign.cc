@@ -1,21 +1,9 @@
 #include "assign.h"
+#include "unionfind.h"
 
 #include <algorithm>
 
 namespace ctrack {
-
-namespace {
-
-int find_root(Vec<int> &parent, int x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
-} // namespace
 
 void Assigner::solve(int n, int m, const Vec<Pair> &pairs, double limit,
                      Vec<int> &row_to_col)

@@ -63,11 +63,6 @@ constexpr double kLumaNoise = 5.0, kChromaNoise = 4.0, kShadowNoise = 1.0;
 // extensions: several pixels at once, on any target). A mask is non-zero
 // where true (1 for int, all ones for a vector lane); `c ? a : b` selects
 // lane by lane. Every value fits in 16 bits: at most 16 * 255.
-#if defined(__GNUC__)
-#define CT_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define CT_ALWAYS_INLINE inline
-#endif
 template <typename T> CT_ALWAYS_INLINE T splat(int v) { return T{} + (int16_t)v; }
 template <typename T> CT_ALWAYS_INLINE T vmin(T a, T b) { return a < b ? a : b; }
 template <typename T> CT_ALWAYS_INLINE T vmax(T a, T b) { return a > b ? a : b; }

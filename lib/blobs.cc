@@ -55,21 +55,6 @@ Rect unite(const Rect &a, const Rect &b)
                 std::max(a.y1, b.y1)};
 }
 
-// The first non-zero byte of row[0, lim), or lim; eight bytes at a time.
-int first_nonzero(const uint8_t *row, int lim)
-{
-    int x = 0;
-    for (; x + 8 <= lim; x += 8) {
-        uint64_t v;
-        std::memcpy(&v, row + x, 8);
-        if (v)
-            break;
-    }
-    while (x < lim && !row[x])
-        x++;
-    return x;
-}
-
 // One past the last non-zero byte of row[lim, w), or lim.
 int end_nonzero(const uint8_t *row, int lim, int w)
 {
@@ -105,7 +90,7 @@ Rect foreground_bounds(const uint8_t *mask, int w, int h)
             any |= row[x];
         if (!any)
             continue;
-        r.x0 = first_nonzero(row, r.x0);
+        r.x0 = first_nonzero(row, 0, r.x0);
         r.x1 = end_nonzero(row, r.x1, w);
         r.y0 = std::min(r.y0, y);
         r.y1 = y + 1;

@@ -8,6 +8,14 @@
 
 #include <cstdint>
 
+// A kernel's body, written once and inlined into each build of it (each
+// target's attributes then apply to the whole of it).
+#if defined(__GNUC__)
+#define CT_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define CT_ALWAYS_INLINE inline
+#endif
+
 namespace ctrack {
 
 // One row of the background model's update (background.cc): the frame's
@@ -39,13 +47,12 @@ struct Dsp {
     // The background model (background.cc).
     void (*bg_update_row)(const BgRow &row);
     void (*bg_gather_row)(const BgGather &row);
-    // The nearest of n points (n >= 1) to the query q (dim floats), the
-    // points stored by dimension (dim rows of `stride` floats, stride a
-    // multiple of 8 and at most 128, padded with infinities): its index
-    // (the first of equals) and squared distance, summed as flann::L2 sums
-    // it (nnindex.cc).
-    int (*nn_nearest)(const float *by_dim, int stride, int dim, int n, const float *q,
-                      float *dist2);
+    // The nearest point to the query q (dim floats), the points stored by
+    // dimension (dim rows of `stride` floats, stride a multiple of 8 and at
+    // most 128, padded past the last point with infinities): its index (the
+    // first of equals) and squared distance, summed as flann::L2 sums it
+    // (nnindex.cc).
+    int (*nn_nearest)(const float *by_dim, int stride, int dim, const float *q, float *dist2);
 };
 
 // Fills every entry with the fastest build the flags (CpuFlag bits) allow.

@@ -152,32 +152,26 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
         // A bin that was empty joins the touched list; the entry is written
         // anyway and kept only then (no branch on the pixel's colour).
         uint32_t row_total = 0;
+        auto count = [&](int bin, int i) {
+            touched[n_touched] = (uint16_t)bin;
+            n_touched += hist[bin] == 0;
+            const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i])); // Epanechnikov
+            hist[bin] += k;
+            row_total += k;
+            *out++ = (uint16_t)bin;
+        };
+        const uint8_t *py = yrow + x0 + (size_t)i0 * s;
         if (img.color) {
             const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
             const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
             const size_t cstep = (size_t)img.c_step;
-            const uint8_t *py = yrow + x0 + (size_t)i0 * s;
             for (int i = i0, x = x0 + i0 * s; i < i1; i++, x += s, py += s) {
                 const size_t c = (size_t)(x >> 1) * cstep;
-                const int bin = ((*py >> 5) << 6) | ((urow[c] >> 5) << 3) | (vrow[c] >> 5);
-                touched[n_touched] = (uint16_t)bin;
-                n_touched += hist[bin] == 0;
-                const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i])); // Epanechnikov
-                hist[bin] += k;
-                row_total += k;
-                *out++ = (uint16_t)bin;
+                count(colour_bin(*py, urow[c], vrow[c]), i);
             }
         } else {
-            const uint8_t *py = yrow + x0 + (size_t)i0 * s;
-            for (int i = i0; i < i1; i++, py += s) {
-                const int bin = *py >> 3;
-                touched[n_touched] = (uint16_t)bin;
-                n_touched += hist[bin] == 0;
-                const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i]));
-                hist[bin] += k;
-                row_total += k;
-                *out++ = (uint16_t)bin;
-            }
+            for (int i = i0; i < i1; i++, py += s)
+                count(grey_bin(*py), i);
         }
         total += row_total;
     }

@@ -59,16 +59,25 @@ struct MeanShiftResult {
 // sqrt(i / 65536) in Q16 for i in [0, 65535], from a table made at compile time.
 uint32_t sqrt_q16(uint32_t i);
 
+// The histogram bin of a colour (8 levels of each) and of a grey level (32).
+inline int colour_bin(int Y, int U, int V)
+{
+    return ((Y >> 5) << 6) | ((U >> 5) << 3) | (V >> 5);
+}
+inline int grey_bin(int Y)
+{
+    return Y >> 3;
+}
+
 // The histogram bin of pixel (x, y).
 inline int bin_of(const Planes &img, int x, int y)
 {
     int Y = img.y[(size_t)y * img.y_stride + x];
     if (!img.color)
-        return Y >> 3;
+        return grey_bin(Y);
     int cx = (x >> 1) * img.c_step, cy = y >> 1;
-    int U = img.u[(size_t)cy * img.u_stride + cx];
-    int V = img.v[(size_t)cy * img.v_stride + cx];
-    return ((Y >> 5) << 6) | ((U >> 5) << 3) | (V >> 5);
+    return colour_bin(Y, img.u[(size_t)cy * img.u_stride + cx],
+                      img.v[(size_t)cy * img.v_stride + cx]);
 }
 
 // The work of one tracker's mean shift; holds only scratch buffers, which

@@ -4,12 +4,6 @@
 #include "cpu.h"
 #include "dsp.h"
 
-#if defined(__GNUC__)
-#define CT_NN_INLINE inline __attribute__((always_inline))
-#else
-#define CT_NN_INLINE inline
-#endif
-
 // Every standard header FLANN includes, first: the malloc macro below must
 // reach FLANN's own code only.
 #include <algorithm>
@@ -131,8 +125,8 @@ namespace {
 // searches see the same distances; then the nearest. Built for the portable
 // path and for AVX2 (8 lanes): the same operations in the same order, no
 // fused multiply-add, so the same bits (tests/check_dsp.cc).
-CT_NN_INLINE int nearest(const float *__restrict by_dim, int stride, int dim, int n,
-                         const float *__restrict q, float *dist2)
+CT_ALWAYS_INLINE int nearest(const float *__restrict by_dim, int stride, int dim,
+                             const float *__restrict q, float *dist2)
 {
     float acc[NNIndex::kBruteForceMax];
 #if defined(__GNUC__)
@@ -199,20 +193,19 @@ CT_NN_INLINE int nearest(const float *__restrict by_dim, int stride, int dim, in
             bd = m[k];
             best = at[k];
         }
-    (void)n;
     *dist2 = bd;
     return best;
 }
 
-int nearest_c(const float *by_dim, int stride, int dim, int n, const float *q, float *dist2)
+int nearest_c(const float *by_dim, int stride, int dim, const float *q, float *dist2)
 {
-    return nearest(by_dim, stride, dim, n, q, dist2);
+    return nearest(by_dim, stride, dim, q, dist2);
 }
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target("avx2"))) int nearest_avx2(const float *by_dim, int stride, int dim,
-                                                 int n, const float *q, float *dist2)
+                                                 const float *q, float *dist2)
 {
-    return nearest(by_dim, stride, dim, n, q, dist2);
+    return nearest(by_dim, stride, dim, q, dist2);
 }
 #endif
 
@@ -230,13 +223,12 @@ void nnindex_dsp_init(Dsp *dsp, unsigned flags)
 
 void NNIndex::brute_force(const float *q, int *index, float *dist2, const Dsp *dsp) const
 {
-    const int n = n_;
-    if (n == 0) {
+    if (n_ == 0) {
         *index = -1;
         *dist2 = std::numeric_limits<float>::infinity();
         return;
     }
-    *index = (dsp ? dsp->nn_nearest : nearest_c)(by_dim_.data(), padded_, dim_, n, q, dist2);
+    *index = (dsp ? dsp->nn_nearest : nearest_c)(by_dim_.data(), padded_, dim_, q, dist2);
 }
 
 void NNIndex::search(const float *queries, int nq, int *index, float *dist2, float eps,

@@ -27,6 +27,20 @@ void across3(const uint8_t *src, uint8_t *dst, int n, bool has_left, bool has_ri
     dst[n - 1] = op(op(src[n - 2], src[n - 1]), right);
 }
 
+// dst = max (or min) of rows y - half to y + half of the h rows of n bytes
+// at src, those that exist.
+template <bool Max>
+void down(const uint8_t *src, int n, int h, int y, int half, uint8_t *dst)
+{
+    const int lo = std::max(0, y - half), hi = std::min(h - 1, y + half);
+    std::copy(src + (size_t)lo * n, src + (size_t)lo * n + n, dst);
+    for (int r = lo + 1; r <= hi; r++) {
+        const uint8_t *s = src + (size_t)r * n;
+        for (int x = 0; x < n; x++)
+            dst[x] = Max ? std::max(dst[x], s[x]) : std::min(dst[x], s[x]);
+    }
+}
+
 } // namespace
 
 void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &area)
@@ -45,16 +59,8 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
                       area.x1 < w, 0, 0);
     // Dilation down: rows outside the area are 0 after the dilation across
     // (the input's margin), so the area's rows are all there is.
-    for (int y = 0; y < ah; y++) {
-        uint8_t *d = &b_[(size_t)y * aw];
-        const int lo = std::max(0, y - kHalf), hi = std::min(ah - 1, y + kHalf);
-        std::copy(&a_[(size_t)lo * aw], &a_[(size_t)lo * aw] + aw, d);
-        for (int r = lo + 1; r <= hi; r++) {
-            const uint8_t *s = &a_[(size_t)r * aw];
-            for (int x = 0; x < aw; x++)
-                d[x] = std::max(d[x], s[x]);
-        }
-    }
+    for (int y = 0; y < ah; y++)
+        down<true>(a_.data(), aw, ah, y, kHalf, &b_[(size_t)y * aw]);
     // Erosion across: beyond the image's edge counts as neither (255),
     // beyond the area's the dilation is 0.
     for (int y = 0; y < ah; y++)
@@ -68,13 +74,7 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
             std::fill(d, d + aw, 0);
             continue;
         }
-        const int lo = std::max(0, y - kHalf), hi = std::min(ah - 1, y + kHalf);
-        std::copy(&a_[(size_t)lo * aw], &a_[(size_t)lo * aw] + aw, d);
-        for (int r = lo + 1; r <= hi; r++) {
-            const uint8_t *s = &a_[(size_t)r * aw];
-            for (int x = 0; x < aw; x++)
-                d[x] = std::min(d[x], s[x]);
-        }
+        down<false>(a_.data(), aw, ah, y, kHalf, d);
     }
 }
 
@@ -102,38 +102,32 @@ template <bool Zero> int run_end(const uint8_t *row, int x, int end)
 
 } // namespace
 
-int BoxRuns::root(Vec<Run> &runs, int i)
+int first_nonzero(const uint8_t *row, int x, int end)
 {
-    int r = i;
-    while (runs[r].up != r)
-        r = runs[r].up;
-    while (runs[i].up != r) {
-        const int next = runs[i].up;
-        runs[i].up = r;
-        i = next;
-    }
-    return r;
+    return run_end<false>(row, x, end);
 }
 
-void BoxRuns::join(Vec<Run> &runs, int a, int b)
+void BoxRuns::join(Vec<int> &up, int a, int b)
 {
-    a = root(runs, a);
-    b = root(runs, b);
-    // The first run in raster order is the root.
+    a = find_root(up, a);
+    b = find_root(up, b);
     if (a < b)
-        runs[b].up = a;
+        up[b] = a;
     else if (b < a)
-        runs[a].up = b;
+        up[a] = b;
 }
 
 void BoxRuns::label(const uint8_t *mask, int stride, const Rect &box, bool join_foreground)
 {
     fg_.clear();
     bg_.clear();
+    fg_up_.clear();
+    bg_up_.clear();
     fg_row_.clear();
     bg_row_.clear();
     // Background run 0 stands for everything around the box.
-    bg_.push_back(Run{0, 0, -1, 0, -1});
+    bg_.push_back(Run{0, 0, -1, -1});
+    bg_up_.push_back(0);
     if (box.x1 <= box.x0 || box.y1 <= box.y0) {
         fg_row_.push_back(0);
         bg_row_.push_back(1);
@@ -150,14 +144,16 @@ void BoxRuns::label(const uint8_t *mask, int stride, const Rect &box, bool join_
             if (row[x]) {
                 const int e = run_end<true>(row, x + 1, box.x1);
                 const int left = x == box.x0 ? -1 : (int)bg_.size() - 1;
-                fg_.push_back(Run{x, e, y, (int)fg_.size(), left});
+                fg_up_.push_back((int)fg_.size());
+                fg_.push_back(Run{x, e, y, left});
                 x = e;
             } else {
-                const int e = run_end<false>(row, x + 1, box.x1);
+                const int e = first_nonzero(row, x + 1, box.x1);
                 const int i = (int)bg_.size();
-                bg_.push_back(Run{x, e, y, i, -1});
+                bg_.push_back(Run{x, e, y, -1});
+                bg_up_.push_back(i);
                 if (edge_row || x == box.x0 || e == box.x1)
-                    join(bg_, 0, i);
+                    join(bg_up_, 0, i);
                 x = e;
             }
         }
@@ -170,7 +166,7 @@ void BoxRuns::label(const uint8_t *mask, int stride, const Rect &box, bool join_
         if (join_foreground)
             for (int i = fg_first, j = pf; i < (int)fg_.size() && j < fg_first;) {
                 if (fg_[i].x0 <= fg_[j].x1 && fg_[j].x0 <= fg_[i].x1)
-                    join(fg_, i, j);
+                    join(fg_up_, i, j);
                 if (fg_[i].x1 < fg_[j].x1)
                     i++;
                 else
@@ -178,7 +174,7 @@ void BoxRuns::label(const uint8_t *mask, int stride, const Rect &box, bool join_
             }
         for (int i = bg_first, j = pb; i < (int)bg_.size() && j < bg_first;) {
             if (bg_[i].x0 < bg_[j].x1 && bg_[j].x0 < bg_[i].x1)
-                join(bg_, i, j);
+                join(bg_up_, i, j);
             if (bg_[i].x1 < bg_[j].x1)
                 i++;
             else

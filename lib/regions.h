@@ -15,8 +15,12 @@
 #include "memory.h"
 
 #include "mask.h"
+#include "unionfind.h"
 
 namespace ctrack {
+
+// The first non-zero byte of row[x, end), or end; eight bytes at a time.
+int first_nonzero(const uint8_t *row, int x, int end);
 
 // The closing (dilation, then erosion) of the w x h mask `in` by a
 // rectangle kCloseWidth wide and kCloseHeight tall centred on each pixel,
@@ -43,19 +47,19 @@ private:
 // outside every region, one that is not lies in a hole.
 class BoxRuns {
 public:
-    // A run [x0, x1) of row y. `up` is its union-find parent (runs are
-    // numbered in raster order and a set's root is its first run); for a
-    // foreground run, `left` is the background run just before it, -1 at
-    // the box's edge.
+    // A run [x0, x1) of row y; for a foreground run, `left` is the
+    // background run just before it, -1 at the box's edge. Runs are
+    // numbered in raster order, and a region's root (unionfind.h) is its
+    // first run.
     struct Run {
-        int x0, x1, y, up, left;
+        int x0, x1, y, left;
     };
     // With join_foreground false, the foreground runs are not joined into
     // regions (each is its own root).
     void label(const uint8_t *mask, int stride, const Rect &box, bool join_foreground = true);
-    int fg_root(int i) { return root(fg_, i); }
+    int fg_root(int i) { return find_root(fg_up_, i); }
     // Whether background run i is outside (joined to what surrounds the box).
-    bool outside(int i) { return root(bg_, i) == 0; }
+    bool outside(int i) { return find_root(bg_up_, i) == 0; }
     const Vec<Run> &fg() const { return fg_; }
     const Vec<Run> &bg() const { return bg_; }
     // The background runs of the box's row r (0 for its first): [first, end).
@@ -64,13 +68,15 @@ public:
     size_t memory_bytes() const
     {
         return (fg_.capacity() + bg_.capacity()) * sizeof(Run) +
-               (fg_row_.capacity() + bg_row_.capacity()) * sizeof(int);
+               (fg_up_.capacity() + bg_up_.capacity() + fg_row_.capacity() +
+                bg_row_.capacity()) * sizeof(int);
     }
 
 private:
-    static int root(Vec<Run> &runs, int i);
-    static void join(Vec<Run> &runs, int a, int b);
+    // Joins a's and b's sets under the first of their roots.
+    static void join(Vec<int> &up, int a, int b);
     Vec<Run> fg_, bg_;
+    Vec<int> fg_up_, bg_up_; // the runs' union-find parents
     Vec<int> fg_row_, bg_row_; // each row's first run, then the end
 };
 

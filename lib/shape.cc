@@ -156,9 +156,14 @@ void outline_of(const uint8_t *mask, int stride, int x0, int y0, int x1, int y1,
         const int c = (int)(((x + 0.5 - centre) / h + 0.5) * kGrid);
         col[(size_t)(x - x0)] = c >= 0 && c < kGrid ? c : -1;
     }
-    // The outline (mask.h), each pixel in its cell of the canvas.
+    // The outline (mask.h), each pixel in its cell of the canvas; the row's
+    // cell computed once a row (the pixels come row by row).
+    int last_y = -1, r = 0;
     for_each_outline(mask, (size_t)stride, x0, y0, x1, y1, [&](int x, int y) {
-        const int r = (int)((y + 0.5 - y0) / h * kGrid);
+        if (y != last_y) {
+            r = (int)((y + 0.5 - y0) / h * kGrid);
+            last_y = y;
+        }
         const int c = col[(size_t)(x - x0)];
         if (r >= 0 && r < kGrid && c >= 0)
             o->dist[r][c] = 0;

@@ -49,6 +49,7 @@ static bool allocation_allowed(bool)
 }
 
 #include "alloc_hooks.h"
+#include "tracker_io.h"
 
 namespace {
 
@@ -120,35 +121,6 @@ template <typename F> auto watched(const Counting &host, F &&f)
     return r;
 }
 
-std::vector<ct_track> tracks_of(ct_tracker *t)
-{
-    std::vector<ct_track> out(512);
-    size_t count = 0;
-    ck_assert_int_eq(ct_tracker_get_tracks(t, out.data(), out.size(), sizeof(ct_track), &count),
-                     CT_OK);
-    out.resize(count);
-    return out;
-}
-
-bool same(const std::vector<ct_track> &a, const std::vector<ct_track> &b)
-{
-    return a.size() == b.size() &&
-           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(ct_track)) == 0);
-}
-
-ct_frame as_bgr24(const ct_frame &f, std::vector<uint8_t> *bgr)
-{
-    bgr->resize((size_t)3 * f.width * f.height);
-    i420_to_bgr24(&f, bgr->data());
-    ct_frame out = f;
-    out.format = CT_FORMAT_BGR24;
-    out.planes[0] = bgr->data();
-    out.planes[1] = out.planes[2] = nullptr;
-    out.strides[0] = 3 * f.width;
-    out.strides[1] = out.strides[2] = 0;
-    return out;
-}
-
 enum Mode { DETECTIONS, DETECTIONS_AND_PIXELS, PIXELS, PIXELS_BGR24, VERIFY };
 
 // TUD-Campus in one mode: the tracker of the counting allocator against
@@ -208,19 +180,19 @@ void replay(Mode mode)
             const int st = watched(host, [&] { return ct_tracker_feed(t, &f, d, n); });
             if (host.fail_countdown < 0) {
                 ck_assert_int_eq(st, CT_ERROR_OUT_OF_MEMORY);
-                ck_assert(same(tracks_of(t), before));
+                assert_equal(tracks_of(t), before);
                 refused++;
             } else {
                 ck_assert_int_eq(st, CT_OK);
             }
             host.fail_countdown = -1;
             if (st == CT_OK) {
-                ck_assert(same(tracks_of(t), tracks_of(ref)));
+                assert_equal(tracks_of(t), tracks_of(ref));
                 continue;
             }
         }
         ck_assert_int_eq(watched(host, [&] { return ct_tracker_feed(t, &f, d, n); }), CT_OK);
-        ck_assert(same(tracks_of(t), tracks_of(ref)));
+        assert_equal(tracks_of(t), tracks_of(ref));
     }
     ck_assert_int_gt(frames, 60);
     ck_assert_int_eq(watched(host, [&] { return ct_tracker_reset(t); }), CT_OK);

@@ -39,15 +39,24 @@ Vec<unsigned> runnable()
     return out;
 }
 
-} // namespace
-
-START_TEST(rows_match_the_portable_build)
+// Calls f(portable, build, flags) for each build this CPU runs (the
+// portable one first, against itself).
+template <typename F> void against_portable(F &&f)
 {
     Dsp ref;
     dsp_init(&ref, 0);
     for (unsigned flags : runnable()) {
         Dsp d;
         dsp_init(&d, flags);
+        f(ref, d, flags);
+    }
+}
+
+} // namespace
+
+START_TEST(rows_match_the_portable_build)
+{
+    against_portable([](const Dsp &ref, const Dsp &d, unsigned flags) {
         for (int w : {1, 2, 7, 15, 16, 17, 31, 32, 33, 63, 640, 1921}) {
             Vec<uint8_t> src(3 * (size_t)w);
             for (uint8_t &b : src)
@@ -68,7 +77,7 @@ START_TEST(rows_match_the_portable_build)
                               flags, w, rgb ? "RGB" : "BGR");
             }
         }
-    }
+    });
 }
 END_TEST
 
@@ -78,11 +87,7 @@ END_TEST
 // decisions' edges (model and image a few levels apart).
 START_TEST(background_rows_match_the_portable_build)
 {
-    Dsp ref;
-    dsp_init(&ref, 0);
-    for (unsigned flags : runnable()) {
-        Dsp d;
-        dsp_init(&d, flags);
+    against_portable([](const Dsp &ref, const Dsp &d, unsigned flags) {
         for (int trial = 0; trial < 400; trial++) {
             const int w = 1 + trial % 70;
             const bool near = trial % 3 == 0;
@@ -162,7 +167,7 @@ START_TEST(background_rows_match_the_portable_build)
                 ck_assert_msg(ga[k] == gb[k], "flags 0x%x, width %d: gathering differs", flags,
                               w);
         }
-    }
+    });
 }
 END_TEST
 
@@ -195,18 +200,13 @@ START_TEST(frames_match_the_portable_build)
 }
 END_TEST
 
-// The mask takes features away, and back.
 // The nearest-neighbour search's distances (nnindex.cc): random points and
 // queries, every dimension up to 20 (the groups of four and the rest),
-// strides up to 128 floats (the most the index stores), values over a descriptor's range and tiny ones
-// (rounding), to the bit.
+// strides up to 128 floats (the most the index stores), values over a
+// descriptor's range and tiny ones (rounding), to the bit.
 START_TEST(nn_distances_match_the_portable_build)
 {
-    Dsp ref;
-    dsp_init(&ref, 0);
-    for (unsigned flags : runnable()) {
-        Dsp d;
-        dsp_init(&d, flags);
+    against_portable([](const Dsp &ref, const Dsp &d, unsigned flags) {
         for (int trial = 0; trial < 300; trial++) {
             const int dim = 1 + trial % 20, stride = 8 * (1 + trial % 16);
             const float scale = trial % 5 == 0 ? 1e-3f : 255.0f;
@@ -224,8 +224,8 @@ START_TEST(nn_distances_match_the_portable_build)
                 for (int k = 0; k < dim; k++)
                     pts[(size_t)k * stride + n - 1] = pts[(size_t)k * stride + n / 2];
             float da, db;
-            const int ia = ref.nn_nearest(pts.data(), stride, dim, n, q.data(), &da);
-            const int ib = d.nn_nearest(pts.data(), stride, dim, n, q.data(), &db);
+            const int ia = ref.nn_nearest(pts.data(), stride, dim, q.data(), &da);
+            const int ib = d.nn_nearest(pts.data(), stride, dim, q.data(), &db);
             ck_assert_msg(ia == ib && std::memcmp(&da, &db, sizeof da) == 0,
                           "flags 0x%x, dim %d, stride %d: point %d at %.9g, the portable "
                           "build's %d at %.9g", flags, dim, stride, ib, (double)db, ia,
@@ -255,10 +255,11 @@ START_TEST(nn_distances_match_the_portable_build)
             }
             ck_assert_int_eq(ia, want);
         }
-    }
+    });
 }
 END_TEST
 
+// The mask takes features away, and back.
 START_TEST(mask_forces_the_portable_path)
 {
     set_cpu_mask(~0u);

@@ -61,6 +61,15 @@ cv::Mat random_mask(std::mt19937 &rng, int w, int h)
     return m;
 }
 
+// A random box inside a w x h image, at least one pixel.
+Rect random_box(std::mt19937 &rng, int w, int h)
+{
+    auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    const int x0 = u(0, w - 1), y0 = u(0, h - 1);
+    const int x1 = u(x0 + 1, w), y1 = u(y0 + 1, h);
+    return Rect{x0, y0, x1, y1};
+}
+
 // The foreground's bounds with the blob finder's margin (2 columns, 4
 // rows), or an empty box.
 Rect area_of(const cv::Mat &m)
@@ -168,9 +177,8 @@ START_TEST(shape_equals_the_reference)
         const int w = std::uniform_int_distribution<int>(1, 90)(rng);
         const int h = std::uniform_int_distribution<int>(1, 120)(rng);
         const cv::Mat m = random_mask(rng, w, h);
-        auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-        const int x0 = u(0, w - 1), y0 = u(0, h - 1);
-        const int x1 = u(x0 + 1, w), y1 = u(y0 + 1, h);
+        const Rect b = random_box(rng, w, h);
+        const int x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1;
         shape_of(m.data, w, x0, y0, x1, y1, &got);
         reference::ref_shape_of(m.data, w, x0, y0, x1, y1, &want);
         ck_assert_msg(std::memcmp(&got.profile, &want.profile, sizeof want.profile) == 0,
@@ -198,9 +206,8 @@ START_TEST(outline_rows_equal_the_pixel_test)
         const int w = std::uniform_int_distribution<int>(1, 80)(rng);
         const int h = std::uniform_int_distribution<int>(1, 80)(rng);
         const cv::Mat m = random_mask(rng, w, h);
-        auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-        const int x0 = u(0, w - 1), y0 = u(0, h - 1);
-        const int x1 = u(x0 + 1, w), y1 = u(y0 + 1, h);
+        const Rect b = random_box(rng, w, h);
+        const int x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1;
         std::vector<int> want, got;
         for (int y = y0; y < y1; y++)
             for (int x = x0; x < x1; x++)
