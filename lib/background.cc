@@ -58,11 +58,9 @@ constexpr int kChromaForeground = 24;
 // (V's floor) and in chroma (the colour test and the shadows' tolerance).
 constexpr double kLumaNoise = 5.0, kChromaNoise = 4.0, kShadowNoise = 1.0;
 
-// The model's update and test of one pixel, written once for T = int (one
-// pixel) and for T = a vector of 16-bit lanes (GCC and Clang vector
-// extensions: several pixels at once, on any target). A mask is non-zero
-// where true (1 for int, all ones for a vector lane); `c ? a : b` selects
-// lane by lane. Every value fits in 16 bits: at most 16 * 255.
+// The model's update and test of one pixel, in ints: the reference, which
+// the vector builds (luma_bytes() and colour_bytes() below) match bit for
+// bit. A mask is non-zero where true.
 template <typename T> CT_ALWAYS_INLINE T splat(int v) { return T{} + (int16_t)v; }
 template <typename T> CT_ALWAYS_INLINE T vmin(T a, T b) { return a < b ? a : b; }
 template <typename T> CT_ALWAYS_INLINE T vmax(T a, T b) { return a > b ? a : b; }
@@ -109,35 +107,92 @@ CT_ALWAYS_INLINE T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const
     return shadow ? splat<T>(0) : fg | (dc > splat<T>(r.chroma_fg));
 }
 
-// Vectors of N 16-bit lanes, read from and written to N bytes (GCC and
-// Clang vector extensions: SSE2 or NEON for 8 lanes, AVX2 for 16).
 #if defined(__GNUC__)
-template <int N> struct VecOf;
-template <> struct VecOf<8> {
-    typedef int16_t Lanes __attribute__((vector_size(16)));
-    typedef uint8_t Bytes __attribute__((vector_size(8)));
+// The vector builds work on N pixels at once in byte lanes (GCC and Clang
+// vector extensions: SSE2 or NEON for 16, AVX2 for 32), with the same
+// decisions as luma() and colour() rewritten so that no value leaves
+// [0, 255]: additions and subtractions saturate where the exact result
+// would be clamped anyway, and the products compare as quotients
+// (tests/check_dsp.cc checks them against the portable build over the
+// whole byte range of every input, and rates up to 255).
+template <int N> struct Bytes {
+    typedef uint8_t T __attribute__((vector_size(N)));
 };
-template <> struct VecOf<16> {
-    typedef int16_t Lanes __attribute__((vector_size(32)));
-    typedef uint8_t Bytes __attribute__((vector_size(16)));
-};
-template <int N> CT_ALWAYS_INLINE typename VecOf<N>::Lanes load(const uint8_t *p)
+template <typename B> CT_ALWAYS_INLINE B bsplat(int v) { return B{} + (uint8_t)v; }
+template <typename B> CT_ALWAYS_INLINE B umin(B a, B b) { return a < b ? a : b; }
+template <typename B> CT_ALWAYS_INLINE B umax(B a, B b) { return a > b ? a : b; }
+template <typename B> CT_ALWAYS_INLINE B absdiff(B a, B b) { return umax(a, b) - umin(a, b); }
+// a + b and a - b saturated to [0, 255].
+template <typename B> CT_ALWAYS_INLINE B adds(B a, B b) { return a + umin(b, ~a); }
+template <typename B> CT_ALWAYS_INLINE B subs(B a, B b) { return a - umin(b, a); }
+// step_toward(): M + clamp(target - M, -step, step).
+template <typename B> CT_ALWAYS_INLINE B toward(B m, B target, B step)
 {
-    typename VecOf<N>::Bytes b;
-    std::memcpy(&b, p, sizeof b);
-    return __builtin_convertvector(b, typename VecOf<N>::Lanes);
+    return target > m ? umin(target, adds(m, step)) : umax(target, subs(m, step));
 }
-template <int N> CT_ALWAYS_INLINE void store(uint8_t *p, typename VecOf<N>::Lanes v)
+
+// The rates as byte lanes; the levels are clamped to [0, 255], which
+// changes no decision (the differences they are compared with lie there;
+// V's floor is at least 0, as BgRow says).
+template <typename B> struct ByteRates {
+    B step, vmin, chroma_fg, shadow_chroma, warm;
+    explicit ByteRates(const Rates &r)
+        : step(bsplat<B>(r.step)), vmin(bsplat<B>(std::min(r.vmin, 255))),
+          chroma_fg(bsplat<B>(std::min(r.chroma_fg, 255))),
+          shadow_chroma(bsplat<B>(std::min(r.shadow_chroma, 255))),
+          warm(bsplat<B>(r.warm ? 255 : 0))
+    {
+    }
+};
+
+// luma(): N |I - M| > V is |I - M| > V / N (kN = 4: V >> 2, exact for
+// integers); V +- step, then clamped to [vmin, kVMax], saturates first.
+template <typename B> CT_ALWAYS_INLINE B luma_bytes(B I, B &M, B &V, B live, const ByteRates<B> &r)
 {
-    const typename VecOf<N>::Bytes b = __builtin_convertvector(v, typename VecOf<N>::Bytes);
+    static_assert(kN == 4, "V / kN is V >> 2");
+    const B Mn = live ? toward(M, I, r.step) : M;
+    const B D = absdiff(I, Mn);
+    const B learn = live & ((B)(D != bsplat<B>(0)) | r.warm);
+    const B Vt = D > (V >> 2) ? adds(V, r.step) : subs(V, r.step);
+    V = learn ? umin(bsplat<B>(kVMax), umax(r.vmin, Vt)) : V;
+    M = Mn;
+    return (B)(D > V);
+}
+
+// colour(): 16 I >= kShadowLow M is I >= ceil(M / 2), and 16 I <=
+// kShadowHigh M is I <= M - ceil(M / 16).
+template <typename B>
+CT_ALWAYS_INLINE B colour_bytes(B I, B U, B W, B &M, B &V, B &BU, B &BV, B live,
+                                const ByteRates<B> &r)
+{
+    static_assert(kShadowLow == 8 && kShadowHigh == 15, "the shadow's bounds as shifts");
+    const B dc = umax(absdiff(U, BU), absdiff(W, BV));
+    BU = live ? toward(BU, U, r.step) : BU;
+    BV = live ? toward(BV, W, r.step) : BV;
+    const B fg = luma_bytes(I, M, V, live, r);
+    const B half = M - (M >> 1);
+    const B sixteenth = (M >> 4) - (B)((M & bsplat<B>(15)) != bsplat<B>(0));
+    const B shadow = fg & (B)(I < M) & (B)(I >= half) & (B)(I <= M - sixteenth) &
+                     (B)(dc <= r.shadow_chroma);
+    return shadow ? bsplat<B>(0) : fg | (B)(dc > r.chroma_fg);
+}
+
+template <typename B> CT_ALWAYS_INLINE B load_bytes(const uint8_t *p)
+{
+    B b;
+    std::memcpy(&b, p, sizeof b);
+    return b;
+}
+template <typename B> CT_ALWAYS_INLINE void store_bytes(uint8_t *p, B b)
+{
     std::memcpy(p, &b, sizeof b);
 }
 #endif
 
 // One row of the model's update (BgRow): written once, built for the
 // portable path (N = 0: one pixel at a time, the reference) and for vectors
-// of N lanes, which dsp_init() picks by the CPU (tests/check_dsp.cc checks
-// every build against the portable one, bit for bit).
+// of N byte lanes, which dsp_init() picks by the CPU (tests/check_dsp.cc
+// checks every build against the portable one, bit for bit).
 template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
 {
     const Rates r{a.step, a.warm, a.vmin, a.chroma_fg, a.shadow_chroma};
@@ -151,23 +206,26 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
     int x = 0;
 #if defined(__GNUC__)
     if (N > 0) {
-        constexpr int L = N > 0 ? N : 8;
-        typedef typename VecOf<L>::Lanes T;
+        constexpr int L = N > 0 ? N : 16;
+        typedef typename Bytes<L>::T B;
+        const ByteRates<B> br(r);
         for (; x + L <= w; x += L) {
-            T M = load<L>(om + x), V = load<L>(ov + x);
-            const T I = load<L>(iy + x), live = load<L>(frozen + x) == splat<T>(0);
-            T fg;
+            B M = load_bytes<B>(om + x), V = load_bytes<B>(ov + x);
+            const B I = load_bytes<B>(iy + x);
+            const B live = (B)(load_bytes<B>(frozen + x) == bsplat<B>(0));
+            B fg;
             if (a.color) {
-                T BU = load<L>(ou + x), BV = load<L>(ow + x);
-                fg = colour(I, load<L>(iu + x), load<L>(iv + x), M, V, BU, BV, live, r);
-                store<L>(mu + x, BU);
-                store<L>(mv + x, BV);
+                B BU = load_bytes<B>(ou + x), BV = load_bytes<B>(ow + x);
+                fg = colour_bytes(I, load_bytes<B>(iu + x), load_bytes<B>(iv + x), M, V, BU, BV,
+                                  live, br);
+                store_bytes(mu + x, BU);
+                store_bytes(mv + x, BV);
             } else {
-                fg = luma(I, M, V, live, r);
+                fg = luma_bytes(I, M, V, live, br);
             }
-            store<L>(my + x, M);
-            store<L>(vy + x, V);
-            store<L>(mask + x, fg ? splat<T>(255) : splat<T>(0));
+            store_bytes(my + x, M);
+            store_bytes(vy + x, V);
+            store_bytes(mask + x, fg);
         }
     }
 #endif
@@ -219,10 +277,10 @@ void update_row_c(const BgRow &a) { update_row<0>(a); }
 void gather_row_c(const BgGather &g) { gather_row(g); }
 #if defined(__GNUC__)
 // 128-bit vectors: x86-64's baseline (SSE2) and aarch64's (NEON).
-void update_row_v8(const BgRow &a) { update_row<8>(a); }
+void update_row_v16(const BgRow &a) { update_row<16>(a); }
 #endif
 #if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("avx2"))) void update_row_avx2(const BgRow &a) { update_row<16>(a); }
+__attribute__((target("avx2"))) void update_row_avx2(const BgRow &a) { update_row<32>(a); }
 __attribute__((target("avx2"))) void gather_row_avx2(const BgGather &g) { gather_row(g); }
 #endif
 
@@ -233,10 +291,10 @@ void background_dsp_init(Dsp *dsp, unsigned flags)
     dsp->bg_update_row = update_row_c;
     dsp->bg_gather_row = gather_row_c;
 #if defined(__GNUC__)
-    // The 8-lane build wherever the CPU has more than the portable path:
+    // The 16-lane build wherever the CPU has more than the portable path:
     // every x86-64 since 2006 (SSSE3) and every aarch64 (NEON).
     if (flags & (kCpuSSSE3 | kCpuNEON))
-        dsp->bg_update_row = update_row_v8;
+        dsp->bg_update_row = update_row_v16;
 #endif
 #if defined(__x86_64__) && defined(__GNUC__)
     if (flags & kCpuAVX2) {

@@ -83,8 +83,9 @@ END_TEST
 
 // The background model's row update and gathering: random rows of every
 // width up to 70 (each vector build's tail), colour and grey, warming up or
-// not, frozen pixels, rates over their range; then values near the
-// decisions' edges (model and image a few levels apart).
+// not, frozen pixels, every byte value in every input, rates over their
+// range and beyond it; then values near the decisions' edges (model and
+// image a few levels apart).
 START_TEST(background_rows_match_the_portable_build)
 {
     against_portable([](const Dsp &ref, const Dsp &d, unsigned flags) {
@@ -116,10 +117,13 @@ START_TEST(background_rows_match_the_portable_build)
             r.w = w;
             r.color = trial % 2 == 0;
             r.warm = trial % 5 == 0;
-            r.step = r.warm ? 1 + next_byte() % 16 : 1;
-            r.vmin = 25 + next_byte() % 30;
-            r.chroma_fg = 24 + next_byte() % 20;
-            r.shadow_chroma = 8 + next_byte() % 10;
+            // Usual rates, and in two trials of seven the extremes: a start's
+            // step up to 255, levels past 255 (a very noisy sensor's).
+            const bool wide = trial % 7 < 2;
+            r.step = r.warm ? 1 + next_byte() % (wide ? 255 : 16) : 1;
+            r.vmin = wide ? next_byte() + next_byte() / 4 : 25 + next_byte() % 30;
+            r.chroma_fg = wide ? next_byte() + next_byte() / 4 : 24 + next_byte() % 20;
+            r.shadow_chroma = wide ? next_byte() + next_byte() / 4 : 8 + next_byte() % 10;
             Vec<uint8_t> out_a[5], out_b[5];
             BgRow a = r, b = r;
             for (int k = 0; k < 5; k++) {
