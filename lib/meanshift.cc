@@ -80,6 +80,26 @@ uint32_t sqrt_q16(uint32_t i)
     return kSqrt[std::min<uint32_t>(i, 65535)];
 }
 
+// The bins the samples reached, in ascending order: a pass over the
+// histogram afterwards, eight bins at a time (most groups are empty), costs
+// less than keeping the list sample by sample.
+void MeanShift::list_touched()
+{
+    int n = 0;
+    for (int g = 0; g < kHistBins; g += 8) {
+        uint32_t any = 0;
+        for (int j = 0; j < 8; j++)
+            any |= hist_[g + j];
+        if (any == 0)
+            continue;
+        for (int j = 0; j < 8; j++) {
+            touched_[n] = (uint16_t)(g + j);
+            n += hist_[g + j] != 0;
+        }
+    }
+    n_touched_ = n;
+}
+
 void MeanShift::clear_hist()
 {
     for (int i = 0; i < n_touched_; i++)
@@ -113,6 +133,12 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
         int64_t dx = ((int64_t)(x0 + i * s) << 8) - cx8;
         columns_[i] = kernel_term(dx, hw2);
     }
+    // Each column's offset in the chroma rows.
+    if (img.color) {
+        chroma_.resize(ncols);
+        for (int i = 0; i < ncols; i++)
+            chroma_[i] = ((x0 + i * s) >> 1) * (int32_t)img.c_step;
+    }
     // The loop works on locals, which the compiler keeps in registers: the
     // members would be reloaded after every store.
     const int nrows = (y1 - y0) / s + 1;
@@ -125,9 +151,8 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     size_t n_runs = 0;
     step_ = s;
     uint32_t *hist = hist_;
-    uint16_t *touched = touched_;
-    int n_touched = n_touched_;
     const int32_t *cols = columns_.data();
+    const int32_t *chroma = chroma_.data();
     uint64_t total = 0;
     // The columns inside the ellipse on a row are one run: the column term
     // falls to the centre and rises after it.
@@ -149,34 +174,33 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
             i1++;
         const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
         runs[n_runs++] = Run{x0 + i0 * s, y, i1 - i0};
-        // A bin that was empty joins the touched list; the entry is written
-        // anyway and kept only then (no branch on the pixel's colour).
+        const uint32_t rk = (uint32_t)(kKernelOne - row); // Epanechnikov: rk - column term
         uint32_t row_total = 0;
-        auto count = [&](int bin, int i) {
-            touched[n_touched] = (uint16_t)bin;
-            n_touched += hist[bin] == 0;
-            const uint32_t k = (uint32_t)(kKernelOne - (row + cols[i])); // Epanechnikov
-            hist[bin] += k;
-            row_total += k;
-            *out++ = (uint16_t)bin;
-        };
         const uint8_t *py = yrow + x0 + (size_t)i0 * s;
         if (img.color) {
             const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
             const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
-            const size_t cstep = (size_t)img.c_step;
-            for (int i = i0, x = x0 + i0 * s; i < i1; i++, x += s, py += s) {
-                const size_t c = (size_t)(x >> 1) * cstep;
-                count(colour_bin(*py, urow[c], vrow[c]), i);
+            for (int i = i0; i < i1; i++, py += s) {
+                const int32_t c = chroma[i];
+                const int bin = colour_bin(*py, urow[c], vrow[c]);
+                const uint32_t k = rk - (uint32_t)cols[i];
+                hist[bin] += k;
+                row_total += k;
+                *out++ = (uint16_t)bin;
             }
         } else {
-            for (int i = i0; i < i1; i++, py += s)
-                count(grey_bin(*py), i);
+            for (int i = i0; i < i1; i++, py += s) {
+                const int bin = grey_bin(*py);
+                const uint32_t k = rk - (uint32_t)cols[i];
+                hist[bin] += k;
+                row_total += k;
+                *out++ = (uint16_t)bin;
+            }
         }
         total += row_total;
     }
     n_runs_ = n_runs;
-    n_touched_ = n_touched;
+    list_touched();
     return total;
 }
 
@@ -222,12 +246,10 @@ void MeanShift::background(const Planes &img, double cx, double cy, double w, do
         for (int x = x0; x <= x1; x += s) {
             if (std::fabs(x - cx) < iw && std::fabs(y - cy) < ih)
                 continue;
-            int bin = bin_of(img, x, y);
-            if (hist_[bin] == 0)
-                touched_[n_touched_++] = (uint16_t)bin;
-            hist_[bin]++;
+            hist_[bin_of(img, x, y)]++;
             total++;
         }
+    list_touched();
     normalise(total, out);
     clear_hist();
 }

@@ -121,7 +121,7 @@ public:
     size_t memory_bytes() const
     {
         return bins_.capacity() * sizeof(uint16_t) + runs_.capacity() * sizeof(Run) +
-               columns_.capacity() * sizeof(int32_t);
+               (columns_.capacity() + chroma_.capacity()) * sizeof(int32_t);
     }
 
 private:
@@ -150,6 +150,7 @@ private:
                     double grow, uint16_t *out);
     void weight_against_background(const Planes &img, double cx, double cy, double w,
                                    double h, ColorModel *m);
+    void list_touched();
     void clear_hist();
 
     // This window's samples, row by row: n_runs_ runs, their bins in order.
@@ -157,9 +158,10 @@ private:
     Vec<uint16_t> bins_;
     size_t n_runs_ = 0;
     int step_ = 1;
-    Vec<int32_t> columns_;
+    Vec<int32_t> columns_; // each sampled column's kernel term
+    Vec<int32_t> chroma_;  // and its offset in a chroma row
     uint32_t hist_[kHistBins] = {};
-    uint16_t touched_[kHistBins + 1]; // one spare: sample() writes before it counts
+    uint16_t touched_[kHistBins]; // the bins of hist_ that are not 0
     int n_touched_ = 0;
 };
 
