@@ -402,7 +402,24 @@ uint32_t divide_small(uint32_t n, uint32_t d)
     return (uint32_t)(((uint64_t)n * kReciprocal.r[d]) >> 32);
 }
 
-double Background::exposure_ratio(const Planes &img) const
+const uint8_t *Background::frozen_row(const Rect *frozen, int n_frozen, int y)
+{
+    uint8_t *zeros = frozen_line_.data(), *line = zeros + w_;
+    bool any = false;
+    for (int k = 0; k < n_frozen; k++) {
+        const Rect &r = frozen[k];
+        const int x0 = std::max(0, r.x0), x1 = std::min(w_, r.x1);
+        if (y < r.y0 || y >= r.y1 || x0 >= x1)
+            continue;
+        if (!any)
+            std::memset(line, 0, (size_t)w_);
+        any = true;
+        std::memset(line + x0, 1, (size_t)(x1 - x0));
+    }
+    return any ? line : zeros;
+}
+
+double Background::exposure_ratio(const Planes &img, const Rect *frozen, int n_frozen)
 {
     // Four histograms in turn (summed at the end): a sample never waits on
     // the one before it to count the same level, as neighbours mostly do.
@@ -410,7 +427,7 @@ double Background::exposure_ratio(const Planes &img) const
     for (int y = 0; y < h_; y += 4) {
         const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
         const uint8_t *m = old_my_.data() + (size_t)y * w_;
-        const uint8_t *f = frozen_.data() + (size_t)y * w_;
+        const uint8_t *f = frozen_row(frozen, n_frozen, y);
         for (int x = 0; x < w_; x += 4) {
             if (f[x] || m[x] < kMinRatioLuma)
                 continue;
@@ -447,7 +464,7 @@ size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
-           mask_.capacity() + frozen_.capacity() + line_y_.capacity() + line_u_.capacity() +
+           mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity();
 }
 
@@ -492,7 +509,7 @@ void Background::start(const Planes &img)
     mu_.assign(n, 128); // grey frames: no colour, and the loop leaves them
     mv_.assign(n, 128);
     mask_.assign(n, 0);
-    frozen_.assign(n, 0);
+    frozen_line_.assign(2 * (size_t)w_, 0);
     line_vmax_.assign(w_, kVMax);
     frames_ = 0;
     noise_ = NoiseLevel();
@@ -515,18 +532,15 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         vy_.resize(n);
         mu_.resize(n);
         mv_.resize(n); // grey frames leave the chroma alone: nothing reads it
-    }
-    std::fill(frozen_.begin(), frozen_.end(), 0);
-    for (int k = 0; k < n_frozen; k++) {
-        const Rect &r = frozen[k];
-        for (int y = std::max(0, r.y0); y < std::min(h_, r.y1); y++)
-            std::fill(frozen_.begin() + (size_t)y * w_ + std::max(0, r.x0),
-                      frozen_.begin() + (size_t)y * w_ + std::max(std::max(0, r.x0), std::min(w_, r.x1)),
-                      1);
+        // A restart at another size that failed and was rolled back left
+        // these at that size.
+        mask_.resize(n);
+        if (frozen_line_.size() != 2 * (size_t)w_)
+            frozen_line_.assign(2 * (size_t)w_, 0);
     }
     if (restart)
         start_us_ = last_us_ = t_us;
-    set_gain(restart ? 1.0 : exposure_ratio(img));
+    set_gain(restart ? 1.0 : exposure_ratio(img, frozen, n_frozen));
     const bool warm = elapsed_us(t_us, start_us_) < (uint64_t)kWarmupUs;
     const int step =
         warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : elapsed_us(t_us, last_us_)) : 1;
@@ -575,7 +589,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         dsp_.bg_gather_row(g);
         const size_t row = (size_t)y * w;
         const uint8_t *iy = line_y_.data();
-        const uint8_t *frozen = frozen_.data() + row;
+        const uint8_t *frozen_y = frozen_row(frozen, n_frozen, y);
         // The model before this frame: the old buffers, or on a (re)start
         // the image's own samples (and V at kVMax). Never the buffers
         // written.
@@ -585,11 +599,11 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         r.ou = restart ? iu : old_mu_.data() + row;
         r.ow = restart ? iv : old_mv_.data() + row;
         if (sample && y % 4 == 0)
-            noise_.sample(iy, r.om, color ? iu : nullptr, r.ou, iv, r.ow, frozen, w);
+            noise_.sample(iy, r.om, color ? iu : nullptr, r.ou, iv, r.ow, frozen_y, w);
         r.iy = iy;
         r.iu = iu;
         r.iv = iv;
-        r.frozen = frozen;
+        r.frozen = frozen_y;
         r.my = my_.data() + row;
         r.vy = vy_.data() + row;
         r.mu = mu_.data() + row;

@@ -80,7 +80,11 @@ private:
     // model luma over a grid of pixels no track stands on (1 within a
     // deadband). A global step of light (auto-exposure, a cloud, a lamp)
     // changes it, people moving do not.
-    double exposure_ratio(const Planes &img) const;
+    double exposure_ratio(const Planes &img, const Rect *frozen, int n_frozen);
+    // Row y of the frozen mask (1 inside the boxes, working pixels): a row
+    // no box reaches is a row of zeros kept for it, else one row of
+    // frozen_line_ is filled.
+    const uint8_t *frozen_row(const Rect *frozen, int n_frozen, int y);
     // Reads the frame's luma divided by gain from now on (gain_lut_).
     void set_gain(double gain);
     void swap_models();
@@ -112,7 +116,8 @@ private:
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     bool kept_ = false;
-    Vec<uint8_t> mask_, frozen_;
+    Vec<uint8_t> mask_;
+    Vec<uint8_t> frozen_line_; // a row of zeros, then a row for frozen_row()
     Vec<uint8_t> line_y_, line_u_, line_v_; // one row's samples
     Vec<uint8_t> line_vmax_;                // kVMax, a row of it
 };

@@ -20,6 +20,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "background.h"
 #include "blobs.h"
 #include "nnindex.h"
 #include "video.h"
@@ -511,6 +512,62 @@ START_TEST(mask_resize_out_of_memory)
 }
 END_TEST
 
+// An I420 frame of w x h, grey-green with a bright square at (x, 8).
+static std::vector<uint8_t> square_frame(int w, int h, int x, ctrack::Planes *p)
+{
+    const int cw = (w + 1) / 2, ch = (h + 1) / 2;
+    std::vector<uint8_t> f((size_t)w * h + 2 * (size_t)cw * ch, 100);
+    for (int y = 8; y < std::min(h, 24); y++)
+        for (int c = x; c < std::min(w, x + 12); c++)
+            f[(size_t)y * w + c] = 220;
+    p->width = w;
+    p->height = h;
+    p->y = f.data();
+    p->u = f.data() + (size_t)w * h;
+    p->v = p->u + (size_t)cw * ch;
+    p->y_stride = w;
+    p->u_stride = p->v_stride = cw;
+    p->color = true;
+    return f;
+}
+
+// A frame of another size restarts the background model; when the restart
+// cannot have its memory, the step fails and is rolled back, and the
+// frames of the old size that follow give the masks of a model that never
+// saw that frame (the mask and the frozen row kept their old size).
+START_TEST(background_restart_out_of_memory)
+{
+    ctrack::Background failed, clean;
+    const ctrack::Rect frozen{2, 2, 8, 10};
+    for (int k = 0; k < 12; k++) {
+        ctrack::Planes p;
+        const std::vector<uint8_t> f = square_frame(64, 48, 4 * k, &p);
+        if (k == 6) {
+            ctrack::Planes q;
+            const std::vector<uint8_t> g = square_frame(128, 8, 0, &q);
+            fail_countdown = 0;
+            bool threw = false;
+            try {
+                failed.apply(k * 40000 - 20000, q, &frozen, 1);
+            } catch (const std::bad_alloc &) {
+                threw = true;
+            }
+            fail_countdown = -1;
+            ck_assert(threw);
+            failed.rollback();
+        }
+        failed.apply(k * 40000, p, &frozen, 1);
+        clean.apply(k * 40000, p, &frozen, 1);
+        failed.commit();
+        clean.commit();
+        ck_assert_int_eq(failed.width(), 32);
+        ck_assert_int_eq(failed.height(), 24);
+        ck_assert_msg(std::memcmp(failed.mask(), clean.mask(), 32 * 24) == 0,
+                      "frame %d: the mask differs from the clean model's", k);
+    }
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -531,6 +588,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, steady_state_with_pixels_does_not_allocate);
     tcase_add_test(tc, kd_tree_build_out_of_memory);
     tcase_add_test(tc, mask_resize_out_of_memory);
+    tcase_add_test(tc, background_restart_out_of_memory);
     tcase_add_test(tc, every_allocation_fails_detections_only);
     tcase_add_test(tc, every_allocation_fails_detections_and_pixels);
     tcase_add_test(tc, every_allocation_fails_pixels_only);
