@@ -29,8 +29,6 @@ constexpr std::array<uint16_t, 65536> make_sqrt_table()
 
 constexpr std::array<uint16_t, 65536> kSqrt = make_sqrt_table();
 
-// Kernel profile in Q12.
-constexpr int kKernelOne = 4096;
 
 // Windows larger than this (half-sides, pixels) are cut to it: no frame is
 // near so large (16384 at most), and the arithmetic below stays in range.
@@ -41,18 +39,6 @@ constexpr double kMaxHalfSide = 1 << 20;
 inline int to_int(double v)
 {
     return (int)std::max(-1073741824.0, std::min(1073741824.0, v));
-}
-
-// d^2 / h2 in Q12 (kKernelOne at the ellipse's edge), at most kKernelOne:
-// exact in 64-bit integers while |d| < 2^25 (windows under 131,072 pixels,
-// Q8), past which d^2 * kKernelOne could overflow and the ratio is taken in
-// floating point.
-inline int32_t kernel_term(int64_t d, int64_t h2)
-{
-    constexpr int64_t kExact = int64_t(1) << 25;
-    if (d > -kExact && d < kExact)
-        return (int32_t)std::min<int64_t>(kKernelOne, d * d * kKernelOne / h2);
-    return (int32_t)std::min<double>(kKernelOne, (double)d * (double)d * kKernelOne / (double)h2);
 }
 
 inline int sample_step(double area, double target)
@@ -120,18 +106,17 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     const int y0 = std::max(0, to_int(std::ceil(cy - hh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + hh)));
     if (x1 < x0 || y1 < y0)
         return 0; // also when cx or cy is NaN
-    // r^2 = dx^2 / hw^2 + dy^2 / hh^2 in Q12, as a column term (a table, one
-    // division a column) plus a row term; positions in Q8 so that sub-pixel
-    // centres count.
+    // r^2 = dx^2 / hw^2 + dy^2 / hh^2 in Q12, as a column term (a table) plus
+    // a row term; positions in Q8 so that sub-pixel centres count.
     const int64_t cx8 = std::llround(cx * 256), cy8 = std::llround(cy * 256);
     const int64_t hw8 = std::max<int64_t>(1, std::llround(hw * 256));
     const int64_t hh8 = std::max<int64_t>(1, std::llround(hh * 256));
-    const int64_t hw2 = hw8 * hw8, hh2 = hh8 * hh8;
+    const KernelTerm col_term(hw8 * hw8), row_term(hh8 * hh8);
     const int ncols = (x1 - x0) / s + 1;
     columns_.resize(ncols);
     for (int i = 0; i < ncols; i++) {
         int64_t dx = ((int64_t)(x0 + i * s) << 8) - cx8;
-        columns_[i] = kernel_term(dx, hw2);
+        columns_[i] = col_term(dx);
     }
     // Each column's offset in the chroma rows.
     if (img.color) {
@@ -160,18 +145,28 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     for (int i = 1; i < ncols; i++)
         if (cols[i] < cols[centre])
             centre = i;
+    // Each row's run starts from the last row's (-1: none), which it
+    // differs from by a few columns at each end.
+    int i0 = -1, i1 = -1;
     for (int y = y0; y <= y1; y += s) {
         int64_t dy = ((int64_t)y << 8) - cy8;
-        const int32_t row = kernel_term(dy, hh2);
-        if (row >= kKernelOne)
+        const int32_t row = row_term(dy);
+        if (row >= kKernelOne || row + cols[centre] >= kKernelOne) {
+            i0 = -1;
             continue;
-        int i0 = centre, i1 = centre + 1;
-        if (row + cols[centre] >= kKernelOne)
-            continue;
+        }
+        if (i0 < 0) {
+            i0 = centre;
+            i1 = centre + 1;
+        }
         while (i0 > 0 && row + cols[i0 - 1] < kKernelOne)
             i0--;
         while (i1 < ncols && row + cols[i1] < kKernelOne)
             i1++;
+        while (row + cols[i0] >= kKernelOne) // stops at the centre at the latest
+            i0++;
+        while (row + cols[i1 - 1] >= kKernelOne)
+            i1--;
         const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
         runs[n_runs++] = Run{x0 + i0 * s, y, i1 - i0};
         const uint32_t rk = (uint32_t)(kKernelOne - row); // Epanechnikov: rk - column term
@@ -241,14 +236,46 @@ void MeanShift::background(const Planes &img, double cx, double cy, double w, do
     const int x0 = std::max(0, to_int(std::ceil(cx - ow))), x1 = std::min(img.width - 1, to_int(std::floor(cx + ow)));
     const int y0 = std::max(0, to_int(std::ceil(cy - oh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + oh)));
     clear_hist();
+    if (x1 < x0 || y1 < y0) {
+        normalise(0, out);
+        return; // also when cx or cy is NaN
+    }
+    // The ring's columns, with their chroma offsets; those inside the box
+    // (|x - cx| < iw) are one run [ja, jb), left out on the box's rows.
+    const int ncols = (x1 - x0) / s + 1;
+    chroma_.resize(ncols);
+    for (int j = 0; j < ncols; j++)
+        chroma_[j] = ((x0 + j * s) >> 1) * (int32_t)img.c_step;
+    int ja = 0;
+    while (ja < ncols && !(std::fabs(x0 + ja * s - cx) < iw))
+        ja++;
+    int jb = ja;
+    while (jb < ncols && std::fabs(x0 + jb * s - cx) < iw)
+        jb++;
+    const int32_t *chroma = chroma_.data();
+    uint32_t *hist = hist_;
     uint64_t total = 0;
-    for (int y = y0; y <= y1; y += s)
-        for (int x = x0; x <= x1; x += s) {
-            if (std::fabs(x - cx) < iw && std::fabs(y - cy) < ih)
-                continue;
-            hist_[bin_of(img, x, y)]++;
-            total++;
+    for (int y = y0; y <= y1; y += s) {
+        const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
+        const uint8_t *urow = img.color ? img.u + (size_t)(y >> 1) * img.u_stride : nullptr;
+        const uint8_t *vrow = img.color ? img.v + (size_t)(y >> 1) * img.v_stride : nullptr;
+        auto count = [&](int j0, int j1) {
+            const uint8_t *py = yrow + x0 + (size_t)j0 * s;
+            if (img.color)
+                for (int j = j0; j < j1; j++, py += s)
+                    hist[colour_bin(*py, urow[chroma[j]], vrow[chroma[j]])]++;
+            else
+                for (int j = j0; j < j1; j++, py += s)
+                    hist[grey_bin(*py)]++;
+            total += (uint64_t)(j1 - j0);
+        };
+        if (std::fabs(y - cy) < ih) {
+            count(0, ja);
+            count(jb, ncols);
+        } else {
+            count(0, ncols);
         }
+    }
     list_touched();
     normalise(total, out);
     clear_hist();
@@ -266,21 +293,30 @@ void MeanShift::weight_against_background(const Planes &img, double cx, double c
     for (int b = 0; b < kHistBins; b++)
         if (o[b] > 0)
             o_min = std::min<uint32_t>(o_min, o[b]);
-    // Only the bins the target has matter: the others stay 0.
+    // Only the bins the target has matter (a few dozen of 512, found eight
+    // at a time): the others stay 0.
+    uint16_t bins[kHistBins];
     uint32_t weighted[kHistBins];
+    int n = 0;
     uint64_t sum = 0;
-    for (int b = 0; b < kHistBins; b++) {
-        if (m->q[b] == 0) {
-            weighted[b] = 0;
+    for (int g = 0; g < kHistBins; g += 8) {
+        uint64_t any[2];
+        std::memcpy(any, &m->q[g], sizeof any);
+        if ((any[0] | any[1]) == 0)
             continue;
+        for (int b = g; b < g + 8; b++) {
+            if (m->q[b] == 0)
+                continue;
+            const uint32_t v = o[b] > o_min ? (o_min << 16) / o[b] : kQ16; // Q16, <= 1
+            weighted[n] = (uint32_t)(((uint64_t)m->q[b] * v) >> 16);
+            bins[n++] = (uint16_t)b;
+            sum += weighted[n - 1];
         }
-        uint32_t v = o[b] > o_min ? (o_min << 16) / o[b] : kQ16; // Q16, <= 1
-        weighted[b] = (uint32_t)(((uint64_t)m->q[b] * v) >> 16);
-        sum += weighted[b];
     }
     const uint64_t inv = sum ? ((uint64_t)1 << 32) / sum : 0; // 1 / sum in Q32
-    for (int b = 0; b < kHistBins; b++)
-        m->qw[b] = (uint16_t)std::min<uint64_t>(65535, ((uint64_t)weighted[b] * inv) >> 16);
+    std::memset(m->qw, 0, sizeof m->qw);
+    for (int i = 0; i < n; i++)
+        m->qw[bins[i]] = (uint16_t)std::min<uint64_t>(65535, ((uint64_t)weighted[i] * inv) >> 16);
 }
 
 void MeanShift::build(const Planes &img, double cx, double cy, double w, double h,

@@ -4,6 +4,7 @@
 #ifndef CTRACK_MEANSHIFT_H
 #define CTRACK_MEANSHIFT_H
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -54,6 +55,54 @@ struct MeanShiftResult {
     double cx = 0, cy = 0, width = 0, height = 0;
     int rho = 0;          // Bhattacharyya coefficient at the result, Q16
     int iterations = 0;
+};
+
+// The Epanechnikov kernel's profile in Q12: kKernelOne at the ellipse's
+// edge.
+constexpr int kKernelOne = 4096;
+
+// d^2 / h2 in Q12, at most kKernelOne (a sample's offset d from the
+// window's centre and the squared half-side h2, both in Q8): exact in 64-bit
+// integers while |d| < 2^25 (windows under 131,072 pixels), past which
+// d^2 * kKernelOne could overflow and the ratio is taken in floating point.
+inline int32_t kernel_term(int64_t d, int64_t h2)
+{
+    constexpr int64_t kExact = int64_t(1) << 25;
+    if (d > -kExact && d < kExact)
+        return (int32_t)std::min<int64_t>(kKernelOne, d * d * kKernelOne / h2);
+    return (int32_t)std::min<double>(kKernelOne, (double)d * (double)d * kKernelOne / (double)h2);
+}
+
+// kernel_term(d, h2) for the many d of one window, without a division each:
+// the quotient from a multiplication by 1 / h2 in floating point is within
+// one of the exact one, and two integer comparisons settle it. Windows so
+// large that those products could overflow (h2 >= 2^50: half-sides over
+// 2^17 pixels) divide (check_meanshift compares the two).
+class KernelTerm {
+public:
+    explicit KernelTerm(int64_t h2) : h2_(h2), inv_(1.0 / (double)h2), divide_(h2 >= kHuge) {}
+    int32_t operator()(int64_t d) const
+    {
+        constexpr int64_t kExact = int64_t(1) << 25;
+        if (divide_ || d <= -kExact || d >= kExact)
+            return kernel_term(d, h2_);
+        const int64_t d2 = d * d;
+        if (d2 >= h2_)
+            return kKernelOne; // the quotient is kKernelOne or more
+        const int64_t n = d2 * kKernelOne;
+        int64_t q = (int64_t)((double)n * inv_); // at most kKernelOne: q * h2_ < 2^63
+        if (q * h2_ > n)
+            q--;
+        else if ((q + 1) * h2_ <= n)
+            q++;
+        return (int32_t)q;
+    }
+
+private:
+    static constexpr int64_t kHuge = int64_t(1) << 50;
+    int64_t h2_;
+    double inv_;
+    bool divide_;
 };
 
 // sqrt(i / 65536) in Q16 for i in [0, 65535], from a table made at compile time.

@@ -400,6 +400,39 @@ START_TEST(step_agrees_with_opencv)
 }
 END_TEST
 
+// The kernel's terms from a multiplication by 1 / h2 are the quotients of
+// the division, on random windows from 1/256 of a pixel to 2^20 pixels
+// (past 2^17 they divide), offsets inside, near the edge and far outside,
+// and offsets next to whole quotients, where rounding shows (the product
+// falls short of a whole quotient there; a random search of 40 million
+// windows over 2^12 pixels never found it past one).
+START_TEST(kernel_term_without_division)
+{
+    uint64_t seed = 12345;
+    auto next = [&seed]() {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        return seed >> 11;
+    };
+    for (int t = 0; t < 20000; t++) {
+        const int bits = 1 + (int)(next() % 28);
+        const int64_t hw8 = 1 + (int64_t)(next() % ((uint64_t)1 << bits));
+        const int64_t h2 = hw8 * hw8;
+        const KernelTerm term(h2);
+        for (int k = 0; k < 24; k++) {
+            int64_t d;
+            if (k % 3 == 0)
+                d = (int64_t)(next() % (2 * (uint64_t)hw8 + 1)) - hw8;
+            else if (k % 3 == 1)
+                d = (int64_t)(next() % ((uint64_t)1 << 27)) - ((int64_t)1 << 26);
+            else // d^2 * 4096 / h2 = a^2 when 64 divides hw8, and next to it
+                d = hw8 * (int64_t)(next() % 65) / 64 + (int64_t)(next() % 3) - 1;
+            ck_assert_msg(term(d) == kernel_term(d, h2), "d %lld, h2 %lld: %d, want %d",
+                          (long long)d, (long long)h2, term(d), kernel_term(d, h2));
+        }
+    }
+}
+END_TEST
+
 START_TEST(sqrt_table)
 {
     for (uint32_t i : {0u, 1u, 2u, 100u, 16384u, 65535u}) {
@@ -449,6 +482,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, finds_the_scale);
     tcase_add_test(tc, step_agrees_with_opencv);
     tcase_add_test(tc, grey_frames);
+    tcase_add_test(tc, kernel_term_without_division);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }
