@@ -20,63 +20,105 @@ inline int clampi(int v, int lo, int hi)
 
 } // namespace
 
-// The mean of plane p (stride, subsampling shift) over the rectangle
-// [x0, x1) x [y0, y1) of luma coordinates, clamped to the image; at least
-// one sample.
-static float mean_of(const uint8_t *p, int stride, int step, int shift, const Planes &img,
-                     double x0, double y0, double x1, double y1)
+namespace {
+
+// The pixels [a, b] of a plane (subsampling shift, w samples across) that
+// the interval [x0, x1) of luma coordinates reads, clamped to the plane;
+// at least one.
+struct Span {
+    int a, b;
+};
+inline Span span_of(double x0, double x1, int shift, int w)
 {
-    const int w = (img.width + (1 << shift) - 1) >> shift, h = (img.height + (1 << shift) - 1) >> shift;
-    int a = clampi((int)std::floor(x0) >> shift, 0, w - 1);
-    int b = clampi(((int)std::ceil(x1) - 1) >> shift, a, w - 1);
-    int c = clampi((int)std::floor(y0) >> shift, 0, h - 1);
-    int d = clampi(((int)std::ceil(y1) - 1) >> shift, c, h - 1);
-    unsigned sum = 0;
-    const unsigned n = (unsigned)(d - c + 1) * (unsigned)(b - a + 1);
-    if (step == 1) {
-        // Unit stride (luma, I420's chroma): a loop the compiler vectorises.
-        for (int y = c; y <= d; y++) {
-            const uint8_t *__restrict row = p + (size_t)y * stride + a;
-            unsigned s = 0;
-            for (int x = 0; x <= b - a; x++)
-                s += row[x];
-            sum += s;
-        }
-    } else {
-        for (int y = c; y <= d; y++)
-            for (int x = a; x <= b; x++)
-                sum += p[(size_t)y * stride + (size_t)x * step];
+    const int a = clampi((int)std::floor(x0) >> shift, 0, w - 1);
+    return Span{a, clampi(((int)std::ceil(x1) - 1) >> shift, a, w - 1)};
+}
+
+} // namespace
+
+// The box's cells and the 3 x 3 sub-blocks of each as spans of columns
+// and of rows (those of a column of cells are the same in every row of
+// cells); each block's sum is then a sum of the columns' sums over its
+// rows, taken once for each band of rows: every pixel is read once a band,
+// with no per-block setup. Exact integer sums, so the same means as block
+// by block (check_appearance compares with that).
+void Describer::describe(const Planes &img, double left, double top, double width,
+                         double height, float *out)
+{
+    // A row of sums as wide as the frame (no span is wider) from the
+    // first box on: later boxes, however wide, need no more.
+    cols_.reserve((size_t)img.width);
+    const double cw = width / kGridX, ch = height / kGridY;
+    // Luma: 3 sub-blocks a cell each way; chroma: the cell.
+    Span lx[3 * kGridX], ly[3 * kGridY], cx[kGridX], cy[kGridY];
+    const int cplane_w = (img.width + 1) >> 1, cplane_h = (img.height + 1) >> 1;
+    for (int gx = 0; gx < kGridX; gx++) {
+        const double x0 = left + gx * cw;
+        for (int sx = 0; sx < 3; sx++)
+            lx[3 * gx + sx] =
+                span_of(x0 + sx * cw / 3, x0 + (sx + 1) * cw / 3, 0, img.width);
+        cx[gx] = span_of(x0, x0 + cw, 1, cplane_w);
     }
-    return (float)sum / (float)n;
+    for (int gy = 0; gy < kGridY; gy++) {
+        const double y0 = top + gy * ch;
+        for (int sy = 0; sy < 3; sy++)
+            ly[3 * gy + sy] =
+                span_of(y0 + sy * ch / 3, y0 + (sy + 1) * ch / 3, 0, img.height);
+        cy[gy] = span_of(y0, y0 + ch, 1, cplane_h);
+    }
+    // out[(cell) * kDescDim + k] for k in [0, 9) luma, 9 and 10 chroma.
+    auto sums = [&](const uint8_t *p, int stride, int step, const Span *xs, int nx,
+                    const Span *ys, int ny, int k0, int dk, float scale) {
+        int lo = xs[0].a, hi = xs[0].b;
+        for (int i = 1; i < nx; i++) {
+            lo = std::min(lo, xs[i].a);
+            hi = std::max(hi, xs[i].b);
+        }
+        cols_.resize((size_t)(hi - lo + 1));
+        uint32_t *col = cols_.data();
+        for (int j = 0; j < ny; j++) {
+            const Span &r = ys[j];
+            std::fill(col, col + (hi - lo + 1), 0u);
+            for (int y = r.a; y <= r.b; y++) {
+                const uint8_t *row = p + (size_t)y * stride;
+                if (step == 1) {
+                    const uint8_t *__restrict src = row + lo;
+                    uint32_t *__restrict dst = col;
+                    for (int x = 0; x <= hi - lo; x++)
+                        dst[x] += src[x];
+                } else {
+                    for (int x = lo; x <= hi; x++)
+                        col[x - lo] += row[(size_t)x * step];
+                }
+            }
+            const unsigned rows = (unsigned)(r.b - r.a + 1);
+            for (int i = 0; i < nx; i++) {
+                unsigned sum = 0;
+                for (int x = xs[i].a; x <= xs[i].b; x++)
+                    sum += col[x - lo];
+                const unsigned n = rows * (unsigned)(xs[i].b - xs[i].a + 1);
+                // Block (i, j) of the grid: cell (i / dk, j / dk), entry
+                // (j % dk) * dk + i % dk (luma), or k0 (chroma).
+                const int cell = (j / dk) * kGridX + i / dk;
+                const int k = k0 + (dk == 3 ? (j % 3) * 3 + i % 3 : 0);
+                out[(size_t)cell * kDescDim + k] = scale * ((float)sum / (float)n);
+            }
+        }
+    };
+    sums(img.y, img.y_stride, 1, lx, 3 * kGridX, ly, 3 * kGridY, 0, 3, 1.0f);
+    if (img.color) {
+        sums(img.u, img.u_stride, img.c_step, cx, kGridX, cy, kGridY, 9, 1, kChromaWeight);
+        sums(img.v, img.v_stride, img.c_step, cx, kGridX, cy, kGridY, 10, 1, kChromaWeight);
+    } else {
+        for (int c = 0; c < kPoints; c++)
+            out[(size_t)c * kDescDim + 9] = out[(size_t)c * kDescDim + 10] = 0;
+    }
 }
 
 void describe(const Planes &img, double left, double top, double width, double height,
               float *out)
 {
-    const double cw = width / kGridX, ch = height / kGridY;
-    for (int gy = 0; gy < kGridY; gy++)
-        for (int gx = 0; gx < kGridX; gx++) {
-            float *d = out + (size_t)(gy * kGridX + gx) * kDescDim;
-            const double x0 = left + gx * cw, y0 = top + gy * ch;
-            int k = 0;
-            // Luma: the means of the cell's 3 x 3 sub-blocks (means, not
-            // single pixels, so that a shift of a pixel or two changes
-            // little).
-            for (int sy = 0; sy < 3; sy++)
-                for (int sx = 0; sx < 3; sx++)
-                    d[k++] = mean_of(img.y, img.y_stride, 1, 0, img, x0 + sx * cw / 3,
-                                     y0 + sy * ch / 3, x0 + (sx + 1) * cw / 3,
-                                     y0 + (sy + 1) * ch / 3);
-            if (img.color) {
-                d[k++] = kChromaWeight * mean_of(img.u, img.u_stride, img.c_step, 1, img, x0, y0,
-                                                 x0 + cw, y0 + ch);
-                d[k++] = kChromaWeight * mean_of(img.v, img.v_stride, img.c_step, 1, img, x0, y0,
-                                                 x0 + cw, y0 + ch);
-            } else {
-                d[k++] = 0;
-                d[k++] = 0;
-            }
-        }
+    Describer().describe(img, left, top, width, height, out);
 }
 
 void Template::build(const float *descriptors, bool tree)

@@ -24,7 +24,22 @@ constexpr int kPoints = kGridX * kGridY;
 constexpr int kDescDim = 11;
 
 // Describes the box (left, top, width, height) of the frame into out
-// (kPoints * kDescDim floats). Points outside the image read its edge.
+// (kPoints * kDescDim floats): each number the mean of a block of pixels,
+// the luma's 3 x 3 sub-blocks of a cell and the cell's chroma. Blocks
+// outside the image read its edge. Keeps a row of column sums as wide as
+// the widest frame it has seen.
+class Describer {
+public:
+    void describe(const Planes &img, double left, double top, double width, double height,
+                  float *out);
+    size_t memory_bytes() const { return cols_.capacity() * sizeof(uint32_t); }
+
+private:
+    Vec<uint32_t> cols_;
+};
+
+// The same with a Describer of its own (which allocates): for tests and
+// tools.
 void describe(const Planes &img, double left, double top, double width, double height,
               float *out);
 

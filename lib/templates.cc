@@ -29,7 +29,8 @@ const float *TemplateBank::descriptors(int det)
         slot = (int)(det_desc_.size() / kDescFloats);
         det_desc_.resize(det_desc_.size() + kDescFloats);
         const ct_detection &d = dets_[det];
-        describe(img_, d.left, d.top, d.width, d.height, &det_desc_[(size_t)slot * kDescFloats]);
+        describer_.describe(img_, d.left, d.top, d.width, d.height,
+                            &det_desc_[(size_t)slot * kDescFloats]);
     }
     return &det_desc_[(size_t)slot * kDescFloats];
 }
@@ -76,7 +77,8 @@ void TemplateBank::learn(Vec<Track> &tracks, const Vec<Track> &saved,
 size_t TemplateBank::memory_bytes() const
 {
     size_t b = templates_.capacity() * sizeof(Template) + slot_used_.capacity() +
-               desc_of_.capacity() * sizeof(int) + det_desc_.capacity() * sizeof(float);
+               desc_of_.capacity() * sizeof(int) + det_desc_.capacity() * sizeof(float) +
+               describer_.memory_bytes();
     for (const Template &tp : templates_)
         b += tp.desc.capacity() * sizeof(float) + tp.index.memory_bytes();
     return b;

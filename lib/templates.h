@@ -47,6 +47,7 @@ private:
     const ct_detection *dets_ = nullptr;
     Vec<int> desc_of_;    // per detection: its descriptors' slot, or -1
     Vec<float> det_desc_; // described detections, kPoints * kDescDim each
+    Describer describer_;
     Ddis ddis_;
 };
 

@@ -12,6 +12,7 @@
 
 #include "appearance.h"
 #include "common.h"
+#include "describe_reference.h"
 #include "test_image.h"
 
 using namespace ctrack;
@@ -104,6 +105,55 @@ double ddis_of(const int *index)
 
 // On random descriptors (no ties) exact FLANN search gives exactly the
 // brute-force DDIS.
+// Describer equals the block-by-block reference to the bit: boxes on a
+// real PETS09-S2L1 frame inside, across the edges and outside the image,
+// from a pixel to larger than the frame, at whole and fractional positions;
+// I420, NV12 and grey. One Describer for all, so its kept row of sums is
+// reused at every width.
+START_TEST(describer_equals_the_reference)
+{
+    const std::vector<Crossing> cs = load_crossings();
+    const Image &im = cs[0].frames[0];
+    const Planes i420 = im.planes();
+    Planes grey = i420;
+    grey.color = false;
+    grey.u = grey.v = nullptr;
+    const int cw = (im.w + 1) / 2, ch = (im.h + 1) / 2;
+    std::vector<uint8_t> uv((size_t)2 * cw * ch);
+    for (size_t i = 0; i < (size_t)cw * ch; i++) {
+        uv[2 * i] = i420.u[i];
+        uv[2 * i + 1] = i420.v[i];
+    }
+    Planes nv12 = i420;
+    nv12.u = uv.data();
+    nv12.v = uv.data() + 1;
+    nv12.u_stride = nv12.v_stride = 2 * cw;
+    nv12.c_step = 2;
+    const Planes *kinds[] = {&i420, &nv12, &grey};
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u01(0, 1);
+    Describer describer;
+    std::vector<float> a((size_t)kPoints * kDescDim), b(a.size());
+    for (int trial = 0; trial < 3000; trial++) {
+        const Planes &p = *kinds[trial % 3];
+        double left = (u01(rng) * 1.4 - 0.3) * p.width, top = (u01(rng) * 1.4 - 0.3) * p.height;
+        double width = std::exp(u01(rng) * std::log(1.5 * p.width));
+        double height = std::exp(u01(rng) * std::log(1.5 * p.height));
+        if (trial % 4 == 0) {
+            left = std::round(left);
+            top = std::round(top);
+            width = std::round(width) + 1;
+            height = std::round(height) + 1;
+        }
+        describer.describe(p, left, top, width, height, a.data());
+        describe_reference::describe(p, left, top, width, height, b.data());
+        ck_assert_msg(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0,
+                      "trial %d, box (%.3f, %.3f, %.3f, %.3f): differs from the reference",
+                      trial, left, top, width, height);
+    }
+}
+END_TEST
+
 START_TEST(exact_search_equals_brute_force_on_random_points)
 {
     std::mt19937 rng(5);
@@ -348,6 +398,7 @@ int main(int argc, char **argv)
     Suite *s = suite_create("appearance");
     TCase *tc = tcase_create("appearance");
     tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, describer_equals_the_reference);
     tcase_add_test(tc, exact_search_equals_brute_force_on_random_points);
     tcase_add_test(tc, exact_search_equals_brute_force_on_real_crops);
     tcase_add_test(tc, all_pairs_equals_the_kd_tree);
