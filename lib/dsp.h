@@ -6,6 +6,7 @@
 #ifndef CTRACK_DSP_H
 #define CTRACK_DSP_H
 
+#include <cstddef>
 #include <cstdint>
 
 // A kernel's body, written once and inlined into each build of it (each
@@ -53,6 +54,12 @@ struct Dsp {
     // first of equals) and squared distance, summed as flann::L2 sums it
     // (nnindex.cc).
     int (*nn_nearest)(const float *by_dim, int stride, int dim, const float *q, float *dist2);
+    // The closing's rows (regions.cc), max when max is true, else min:
+    // dst[x] = op(src[x - 1], src[x], src[x + 1]) for x in [1, n - 1), and
+    // dst = op of `rows` rows of n bytes stride apart (1 to 5 rows).
+    void (*close_row3)(const uint8_t *src, uint8_t *dst, int n, bool max);
+    void (*close_rows)(const uint8_t *src, size_t stride, int rows, uint8_t *dst, int n,
+                       bool max);
 };
 
 // Fills every entry with the fastest build the flags (CpuFlag bits) allow.
@@ -61,6 +68,7 @@ void dsp_init(Dsp *dsp, unsigned flags);
 // Each module's part of dsp_init().
 void background_dsp_init(Dsp *dsp, unsigned flags);
 void nnindex_dsp_init(Dsp *dsp, unsigned flags);
+void regions_dsp_init(Dsp *dsp, unsigned flags);
 
 } // namespace ctrack
 

@@ -3,49 +3,114 @@
 #include <algorithm>
 #include <cstring>
 
+#include "cpu.h"
+
 namespace ctrack {
 
 namespace {
 
+// The closing's row kernels (Dsp::close_row3, close_rows): written once,
+// built portable (the reference) and for AVX2, which dsp_init() picks by
+// the CPU; the compiler vectorises each loop for its target
+// (tests/check_dsp.cc checks the builds against each other).
+template <bool Max> CT_ALWAYS_INLINE uint8_t op(uint8_t a, uint8_t b)
+{
+    return Max ? std::max(a, b) : std::min(a, b);
+}
+
+// dst[x] = max (or min) of src[x - 1], src[x], src[x + 1] for x in [1, n - 1).
+template <bool Max> CT_ALWAYS_INLINE void row3(const uint8_t *src, uint8_t *dst, int n)
+{
+    const uint8_t *__restrict s = src;
+    uint8_t *__restrict d = dst;
+    for (int x = 1; x < n - 1; x++)
+        d[x] = op<Max>(op<Max>(s[x - 1], s[x]), s[x + 1]);
+}
+
+// dst = max (or min) of the `rows` rows (1 to 5) of n bytes at src, stride
+// apart: one pass, the missing rows standing in for the first (max and
+// min are idempotent).
+template <bool Max>
+CT_ALWAYS_INLINE void rows_op(const uint8_t *src, size_t stride, int rows, uint8_t *dst, int n)
+{
+    const uint8_t *p[5];
+    for (int r = 0; r < 5; r++)
+        p[r] = src + (r < rows ? (size_t)r * stride : 0);
+    const uint8_t *__restrict s0 = p[0], *__restrict s1 = p[1], *__restrict s2 = p[2];
+    const uint8_t *__restrict s3 = p[3], *__restrict s4 = p[4];
+    uint8_t *__restrict d = dst;
+    for (int x = 0; x < n; x++)
+        d[x] = op<Max>(op<Max>(op<Max>(s0[x], s1[x]), op<Max>(s2[x], s3[x])), s4[x]);
+}
+
+void row3_c(const uint8_t *src, uint8_t *dst, int n, bool max)
+{
+    max ? row3<true>(src, dst, n) : row3<false>(src, dst, n);
+}
+void rows_c(const uint8_t *src, size_t stride, int rows, uint8_t *dst, int n, bool max)
+{
+    max ? rows_op<true>(src, stride, rows, dst, n) : rows_op<false>(src, stride, rows, dst, n);
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void row3_avx2(const uint8_t *src, uint8_t *dst, int n, bool max)
+{
+    max ? row3<true>(src, dst, n) : row3<false>(src, dst, n);
+}
+__attribute__((target("avx2"))) void rows_avx2(const uint8_t *src, size_t stride, int rows,
+                                               uint8_t *dst, int n, bool max)
+{
+    max ? rows_op<true>(src, stride, rows, dst, n) : rows_op<false>(src, stride, rows, dst, n);
+}
+#endif
+
 // dst[x] = max (or min) of src[x - 1], src[x], src[x + 1] for x in [0, n),
 // where src[-1] and src[n] exist when has_left and has_right, else count as
-// neither.
+// neither (outside_left, outside_right).
 template <bool Max>
-void across3(const uint8_t *src, uint8_t *dst, int n, bool has_left, bool has_right,
-             uint8_t outside_left, uint8_t outside_right)
+void across3(const Dsp &dsp, const uint8_t *src, uint8_t *dst, int n, bool has_left,
+             bool has_right, uint8_t outside_left, uint8_t outside_right)
 {
-    auto op = [](uint8_t a, uint8_t b) { return Max ? std::max(a, b) : std::min(a, b); };
     const uint8_t left = has_left ? src[-1] : outside_left;
     const uint8_t right = has_right ? src[n] : outside_right;
     if (n == 1) {
-        dst[0] = op(op(left, src[0]), right);
+        dst[0] = op<Max>(op<Max>(left, src[0]), right);
         return;
     }
-    dst[0] = op(op(left, src[0]), src[1]);
-    for (int x = 1; x < n - 1; x++)
-        dst[x] = op(op(src[x - 1], src[x]), src[x + 1]);
-    dst[n - 1] = op(op(src[n - 2], src[n - 1]), right);
+    dst[0] = op<Max>(op<Max>(left, src[0]), src[1]);
+    dsp.close_row3(src, dst, n, Max);
+    dst[n - 1] = op<Max>(op<Max>(src[n - 2], src[n - 1]), right);
 }
 
 // dst = max (or min) of rows y - half to y + half of the h rows of n bytes
 // at src, those that exist.
 template <bool Max>
-void down(const uint8_t *src, int n, int h, int y, int half, uint8_t *dst)
+void down(const Dsp &dsp, const uint8_t *src, int n, int h, int y, int half, uint8_t *dst)
 {
     const int lo = std::max(0, y - half), hi = std::min(h - 1, y + half);
-    std::copy(src + (size_t)lo * n, src + (size_t)lo * n + n, dst);
-    for (int r = lo + 1; r <= hi; r++) {
-        const uint8_t *s = src + (size_t)r * n;
-        for (int x = 0; x < n; x++)
-            dst[x] = Max ? std::max(dst[x], s[x]) : std::min(dst[x], s[x]);
-    }
+    dsp.close_rows(src + (size_t)lo * n, (size_t)n, hi - lo + 1, dst, n, Max);
 }
 
 } // namespace
 
+void regions_dsp_init(Dsp *dsp, unsigned flags)
+{
+    dsp->close_row3 = row3_c;
+    dsp->close_rows = rows_c;
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (flags & kCpuAVX2) {
+        dsp->close_row3 = row3_avx2;
+        dsp->close_rows = rows_avx2;
+    }
+#endif
+    (void)flags;
+}
+
+Closing::Closing() { dsp_init(&dsp_, cpu_flags()); }
+
 void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &area)
 {
     static_assert(kCloseWidth == 3, "across3 is the horizontal pass");
+    static_assert(kCloseHeight <= 5, "close_rows takes up to 5 rows");
     constexpr int kHalf = kCloseHeight / 2;
     const int x0 = area.x0, y0 = area.y0, aw = area.x1 - area.x0, ah = area.y1 - area.y0;
     if (aw <= 0 || ah <= 0)
@@ -55,16 +120,16 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
     // Dilation across: a pixel beyond the image's edge counts as neither,
     // one beyond the area's is the input's.
     for (int y = 0; y < ah; y++)
-        across3<true>(in + (size_t)(y0 + y) * w + x0, &a_[(size_t)y * aw], aw, x0 > 0,
+        across3<true>(dsp_, in + (size_t)(y0 + y) * w + x0, &a_[(size_t)y * aw], aw, x0 > 0,
                       area.x1 < w, 0, 0);
     // Dilation down: rows outside the area are 0 after the dilation across
     // (the input's margin), so the area's rows are all there is.
     for (int y = 0; y < ah; y++)
-        down<true>(a_.data(), aw, ah, y, kHalf, &b_[(size_t)y * aw]);
+        down<true>(dsp_, a_.data(), aw, ah, y, kHalf, &b_[(size_t)y * aw]);
     // Erosion across: beyond the image's edge counts as neither (255),
     // beyond the area's the dilation is 0.
     for (int y = 0; y < ah; y++)
-        across3<false>(&b_[(size_t)y * aw], &a_[(size_t)y * aw], aw, false, false,
+        across3<false>(dsp_, &b_[(size_t)y * aw], &a_[(size_t)y * aw], aw, false, false,
                        x0 > 0 ? 0 : 255, area.x1 < w ? 0 : 255);
     // Erosion down: likewise, a row beyond the image's edge counts as
     // neither, one beyond the area's is 0.
@@ -74,7 +139,7 @@ void Closing::run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &are
             std::fill(d, d + aw, 0);
             continue;
         }
-        down<false>(a_.data(), aw, ah, y, kHalf, d);
+        down<false>(dsp_, a_.data(), aw, ah, y, kHalf, d);
     }
 }
 

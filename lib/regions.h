@@ -14,6 +14,8 @@
 
 #include "memory.h"
 
+#include "dsp.h"
+
 #include "mask.h"
 #include "unionfind.h"
 
@@ -33,10 +35,12 @@ int first_nonzero(const uint8_t *row, int x, int end);
 class Closing {
 public:
     static constexpr int kCloseWidth = 3, kCloseHeight = 5;
+    Closing();
     void run(const uint8_t *in, uint8_t *out, int w, int h, const Rect &area);
     size_t memory_bytes() const { return a_.capacity() + b_.capacity(); }
 
 private:
+    Dsp dsp_;            // the row kernels for this CPU
     Vec<uint8_t> a_, b_; // the area's rows, between the passes
 };
 

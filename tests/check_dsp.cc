@@ -175,6 +175,33 @@ START_TEST(background_rows_match_the_portable_build)
 }
 END_TEST
 
+// The closing's row kernels: every width up to 70 (each vector build's
+// tail), one to five rows, max and min, random bytes and the mask's 0 and
+// 255.
+START_TEST(closing_rows_match_the_portable_build)
+{
+    against_portable([](const Dsp &ref, const Dsp &d, unsigned flags) {
+        for (int trial = 0; trial < 700; trial++) {
+            const int n = 1 + trial % 70, rows = 1 + trial % 5;
+            const bool max = trial % 2 == 0, mask = trial % 3 == 0;
+            const size_t stride = (size_t)n + trial % 7;
+            Vec<uint8_t> src(stride * 5);
+            for (uint8_t &b : src)
+                b = mask ? (next_byte() % 2 ? 255 : 0) : next_byte();
+            Vec<uint8_t> a(n, 7), b(n, 7);
+            ref.close_row3(src.data(), a.data(), n, max);
+            d.close_row3(src.data(), b.data(), n, max);
+            ck_assert_msg(a == b, "flags 0x%x, width %d, %s: the row differs", flags, n,
+                          max ? "max" : "min");
+            ref.close_rows(src.data(), stride, rows, a.data(), n, max);
+            d.close_rows(src.data(), stride, rows, b.data(), n, max);
+            ck_assert_msg(a == b, "flags 0x%x, width %d, %d rows, %s: differs", flags, n, rows,
+                          max ? "max" : "min");
+        }
+    });
+}
+END_TEST
+
 // A whole odd-sized frame with padded rows through packed_to_i420.
 START_TEST(frames_match_the_portable_build)
 {
@@ -288,6 +315,7 @@ int main()
     tcase_add_test(tc, rows_match_the_portable_build);
     tcase_add_test(tc, frames_match_the_portable_build);
     tcase_add_test(tc, background_rows_match_the_portable_build);
+    tcase_add_test(tc, closing_rows_match_the_portable_build);
     tcase_add_test(tc, nn_distances_match_the_portable_build);
     tcase_add_test(tc, mask_forces_the_portable_path);
     suite_add_tcase(s, tc);
