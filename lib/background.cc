@@ -423,17 +423,19 @@ double Background::exposure_ratio(const Planes &img, const Rect *frozen, int n_f
 {
     // Four histograms in turn (summed at the end): a sample never waits on
     // the one before it to count the same level, as neighbours mostly do.
+    // Every sample is counted, by 1 when usable and else by 0 (no branch;
+    // divide_small(n, 0) is 0).
     uint32_t hists[4][256] = {}, n = 0;
     for (int y = 0; y < h_; y += 4) {
         const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
         const uint8_t *m = old_my_.data() + (size_t)y * w_;
         const uint8_t *f = frozen_row(frozen, n_frozen, y);
-        for (int x = 0; x < w_; x += 4) {
-            if (f[x] || m[x] < kMinRatioLuma)
-                continue;
-            const uint32_t q = divide_small(kRatioOne * src[x * kScale] + m[x] / 2, m[x]);
-            hists[n % 4][std::min<uint32_t>(255, q)]++;
-            n++;
+        for (int x = 0, k = 0; x < w_; x += 4, k++) {
+            const uint32_t mx = m[x];
+            const uint32_t use = (f[x] == 0) & (mx >= (uint32_t)kMinRatioLuma);
+            const uint32_t q = divide_small(kRatioOne * src[x * kScale] + mx / 2, mx);
+            hists[k & 3][std::min<uint32_t>(255, q)] += use;
+            n += use;
         }
     }
     uint32_t hist[256];
