@@ -48,7 +48,16 @@ def pets_hd(src):
 
 
 def warm(path):
+    """Puts the file in the page cache the same way whatever made it: its
+    cached pages are dropped, then read back (the kernel's readahead fills
+    the cache in large folios; the small writes of the ffmpeg that made the
+    file leave it in 4 KiB pages, over which ct-track's reads cost some 20%
+    more at 768x576, the kernel's copy and page lookups). Without
+    posix_fadvise, or where the kernel ignores it, the file is read as it
+    is."""
     with open(path, "rb") as f:
+        if hasattr(os, "posix_fadvise"):
+            os.posix_fadvise(f.fileno(), 0, 0, os.POSIX_FADV_DONTNEED)
         while f.read(1 << 24):
             pass
 
@@ -291,7 +300,10 @@ def main():
     say("ct-track over all 795 PETS09-S2L1 frames with the public detections, output "
         "discarded, median of %d runs; beside it OpenCV's MOG2 alone (`apply()` on one "
         "thread) on the same frames in the same run, and the memory-bandwidth floor: one "
-        "frame copied (a memcpy, measured in the same run)."
+        "frame copied (a memcpy, measured in the same run). The file's cached pages are "
+        "dropped and read back first, so that the kernel holds it the same way whoever "
+        "wrote it (the small writes of ffmpeg, which made it, leave 4 KiB pages, which make "
+        "ct-track's reads some 20%% dearer at 768x576)."
         % (1 if a.quick else 5))
     say("")
     say("| resolution | ct-track, pixels only | ct-track, detections + pixels | "
