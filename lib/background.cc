@@ -161,12 +161,13 @@ template <typename B> CT_ALWAYS_INLINE B luma_bytes(B I, B &M, B &V, B live, con
 
 // colour(): 16 I >= kShadowLow M is I >= ceil(M / 2), and 16 I <=
 // kShadowHigh M is I <= M - ceil(M / 16).
+// dc is the chroma's difference from the model before the update:
+// max(|U - BU|, |W - BV|).
 template <typename B>
-CT_ALWAYS_INLINE B colour_bytes(B I, B U, B W, B &M, B &V, B &BU, B &BV, B live,
+CT_ALWAYS_INLINE B colour_bytes(B I, B U, B W, B dc, B &M, B &V, B &BU, B &BV, B live,
                                 const ByteRates<B> &r)
 {
     static_assert(kShadowLow == 8 && kShadowHigh == 15, "the shadow's bounds as shifts");
-    const B dc = umax(absdiff(U, BU), absdiff(W, BV));
     BU = live ? toward(BU, U, r.step) : BU;
     BV = live ? toward(BV, W, r.step) : BV;
     const B fg = luma_bytes(I, M, V, live, r);
@@ -202,6 +203,7 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
     const uint8_t *__restrict frozen = a.frozen;
     uint8_t *__restrict my = a.my, *__restrict vy = a.vy, *__restrict mu = a.mu;
     uint8_t *__restrict mv = a.mv, *__restrict mask = a.mask;
+    uint8_t *__restrict noise_y = a.noise_y, *__restrict noise_c = a.noise_c;
     const int w = a.w;
     int x = 0;
 #if defined(__GNUC__)
@@ -213,11 +215,16 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
             B M = load_bytes<B>(om + x), V = load_bytes<B>(ov + x);
             const B I = load_bytes<B>(iy + x);
             const B live = (B)(load_bytes<B>(frozen + x) == bsplat<B>(0));
+            if (noise_y)
+                store_bytes(noise_y + x, absdiff(I, M));
             B fg;
             if (a.color) {
                 B BU = load_bytes<B>(ou + x), BV = load_bytes<B>(ow + x);
-                fg = colour_bytes(I, load_bytes<B>(iu + x), load_bytes<B>(iv + x), M, V, BU, BV,
-                                  live, br);
+                const B U = load_bytes<B>(iu + x), W = load_bytes<B>(iv + x);
+                const B dc = umax(absdiff(U, BU), absdiff(W, BV));
+                if (noise_y)
+                    store_bytes(noise_c + x, dc);
+                fg = colour_bytes(I, U, W, dc, M, V, BU, BV, live, br);
                 store_bytes(mu + x, BU);
                 store_bytes(mv + x, BV);
             } else {
@@ -232,6 +239,11 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
     for (; x < w; x++) {
         int M = om[x], V = ov[x];
         const int live = !frozen[x];
+        if (noise_y) {
+            noise_y[x] = (uint8_t)std::abs(iy[x] - M);
+            if (a.color)
+                noise_c[x] = (uint8_t)std::max(std::abs(iu[x] - ou[x]), std::abs(iv[x] - ow[x]));
+        }
         int fg;
         if (a.color) {
             int BU = ou[x], BV = ow[x];
@@ -312,25 +324,33 @@ Dsp Background::make_dsp()
     return d;
 }
 
-void NoiseLevel::begin()
+void NoiseSamples::begin()
 {
-    std::memset(hist_y_, 0, sizeof hist_y_);
-    std::memset(hist_c_, 0, sizeof hist_c_);
-    n_ = 0;
+    std::memset(y, 0, sizeof y);
+    std::memset(c, 0, sizeof c);
+    n = 0;
 }
 
-void NoiseLevel::sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu,
-                        const uint8_t *mu, const uint8_t *iv, const uint8_t *mv,
-                        const uint8_t *frozen, int w)
+void NoiseSamples::sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *frozen, int w)
 {
-    for (int x = 0; x < w; x += 4) {
-        if (frozen[x])
-            continue;
-        hist_y_[std::abs(iy[x] - my[x])]++;
-        if (iu)
-            hist_c_[std::max(std::abs(iu[x] - mu[x]), std::abs(iv[x] - mv[x]))]++;
-        n_++;
+    uint32_t count = 0; // a local: the histograms' stores would reload a member
+    if (dc) {
+        for (int x = 0, k = 0; x < w; x += 4, k = (k + 1) & 3) {
+            if (frozen[x])
+                continue;
+            y[k][dy[x]]++;
+            c[k][dc[x]]++;
+            count++;
+        }
+    } else {
+        for (int x = 0, k = 0; x < w; x += 4, k = (k + 1) & 3) {
+            if (frozen[x])
+                continue;
+            y[k][dy[x]]++;
+            count++;
+        }
     }
+    n += count;
 }
 
 namespace {
@@ -354,12 +374,17 @@ constexpr double kMadPerSd = 0.6745;
 
 } // namespace
 
-void NoiseLevel::end(double dt)
+void NoiseLevel::end(const NoiseSamples &s, double dt)
 {
-    if (n_ == 0)
+    if (s.n == 0)
         return;
-    const double y = median_of(hist_y_, n_) / kMadPerSd;
-    const double c = median_of(hist_c_, n_) / kMadPerSd;
+    uint32_t hy[256], hc[256];
+    for (int v = 0; v < 256; v++) {
+        hy[v] = s.y[0][v] + s.y[1][v] + s.y[2][v] + s.y[3][v];
+        hc[v] = s.c[0][v] + s.c[1][v] + s.c[2][v] + s.c[3][v];
+    }
+    const double y = median_of(hy, s.n) / kMadPerSd;
+    const double c = median_of(hc, s.n) / kMadPerSd;
     const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
     luma += rate * (y - luma);
     chroma += rate * (c - chroma);
@@ -467,7 +492,8 @@ size_t Background::memory_bytes() const
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
-           line_v_.capacity() + line_vmax_.capacity();
+           line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
+           line_dc_.capacity();
 }
 
 void Background::swap_models()
@@ -559,7 +585,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     // model before this frame (not while it starts: it is the image then).
     const bool sample = !restart;
     if (sample)
-        noise_.begin();
+        noise_samples_.begin();
     const int cs = kScale / 2; // working pixel to chroma sample
     const bool color = color_;
     const int w = w_, h = h_;
@@ -568,6 +594,8 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     line_y_.resize(w);
     line_u_.resize(w);
     line_v_.resize(w);
+    line_dy_.resize(w);
+    line_dc_.resize(w);
     const bool identity = gain_ == 1.0;
     for (int y = 0; y < h; y++) {
         BgGather g;
@@ -600,8 +628,11 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         r.ov = restart ? line_vmax_.data() : old_vy_.data() + row;
         r.ou = restart ? iu : old_mu_.data() + row;
         r.ow = restart ? iv : old_mv_.data() + row;
-        if (sample && y % 4 == 0)
-            noise_.sample(iy, r.om, color ? iu : nullptr, r.ou, iv, r.ow, frozen_y, w);
+        // The noise's rows: the update leaves the image's differences from
+        // the model before it in line_dy_ and line_dc_.
+        const bool noise_row = sample && y % 4 == 0;
+        r.noise_y = noise_row ? line_dy_.data() : nullptr;
+        r.noise_c = line_dc_.data();
         r.iy = iy;
         r.iu = iu;
         r.iv = iv;
@@ -619,9 +650,12 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         r.chroma_fg = rates.chroma_fg;
         r.shadow_chroma = rates.shadow_chroma;
         dsp_.bg_update_row(r);
+        if (noise_row)
+            noise_samples_.sample(line_dy_.data(), color ? line_dc_.data() : nullptr, frozen_y,
+                                  w);
     }
     if (sample)
-        noise_.end(restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
+        noise_.end(noise_samples_, restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
 }
 

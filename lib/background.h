@@ -22,19 +22,26 @@ namespace ctrack {
 // n / d for d in [1, 255] and n < 2^16, by a multiplication.
 uint32_t divide_small(uint32_t n, uint32_t d);
 
+// One frame's samples of the noise: histograms of the image's differences
+// from the model, four of each taken in turn (a sample never waits on the
+// one before it to count the same level, as neighbours mostly do). Scratch,
+// not the model's state.
+struct NoiseSamples {
+    uint32_t y[4][256], c[4][256];
+    uint32_t n = 0;
+    void begin();
+    // One row's samples (every 4th pixel): |I - M| (dy) and the larger of
+    // the chroma's differences (dc, null for grey frames); frozen marks
+    // where tracks stand.
+    void sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *frozen, int w);
+};
+
 struct NoiseLevel {
     double luma = 0, chroma = 0; // standard deviations, grey levels
-    void begin();
-    // One row's samples (every 4th pixel): image and model luma, and chroma
-    // (u null for grey frames); frozen marks where tracks stand.
-    void sample(const uint8_t *iy, const uint8_t *my, const uint8_t *iu, const uint8_t *mu,
-                const uint8_t *iv, const uint8_t *mv, const uint8_t *frozen, int w);
     // The frame's medians into the estimates, dt seconds after the last.
-    void end(double dt);
+    void end(const NoiseSamples &s, double dt);
 
 private:
-    uint32_t hist_y_[256], hist_c_[256];
-    uint32_t n_ = 0;
     bool known_ = false; // the first frame's medians are taken as they are
 };
 
@@ -95,6 +102,7 @@ private:
     bool color_ = false;
     int frames_ = 0;
     NoiseLevel noise_;
+    NoiseSamples noise_samples_;
     // The exposure, and the table through which the frame's luma is read:
     // the model stays in its own exposure while the frames' changes, and a
     // global step of light is no foreground.
@@ -120,6 +128,7 @@ private:
     Vec<uint8_t> frozen_line_; // a row of zeros, then a row for frozen_row()
     Vec<uint8_t> line_y_, line_u_, line_v_; // one row's samples
     Vec<uint8_t> line_vmax_;                // kVMax, a row of it
+    Vec<uint8_t> line_dy_, line_dc_;        // a noise row's differences (BgRow)
 };
 
 } // namespace ctrack

@@ -22,10 +22,13 @@ namespace ctrack {
 // One row of the background model's update (background.cc): the frame's
 // samples at the working pixels (iy, iu, iv), the model before the frame
 // (om, ov, ou, ow), the model after it and the foreground mask (my, vy, mu,
-// mv, mask), w pixels; frozen pixels are not learnt.
+// mv, mask), w pixels; frozen pixels are not learnt. Unless noise_y is
+// null, the image's differences from the model before the frame go there,
+// |I - M|, and to noise_c the larger of the chroma's (colour rows).
 struct BgRow {
     const uint8_t *iy, *iu, *iv, *om, *ov, *ou, *ow, *frozen;
     uint8_t *my, *vy, *mu, *mv, *mask;
+    uint8_t *noise_y, *noise_c;
     int w;
     bool color, warm;
     int step, vmin, chroma_fg, shadow_chroma;

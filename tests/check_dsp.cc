@@ -124,19 +124,24 @@ START_TEST(background_rows_match_the_portable_build)
             r.vmin = wide ? next_byte() + next_byte() / 4 : 25 + next_byte() % 30;
             r.chroma_fg = wide ? next_byte() + next_byte() / 4 : 24 + next_byte() % 20;
             r.shadow_chroma = wide ? next_byte() + next_byte() / 4 : 8 + next_byte() % 10;
-            Vec<uint8_t> out_a[5], out_b[5];
+            // The model, the mask, and (every other trial) the noise's
+            // differences.
+            Vec<uint8_t> out_a[7], out_b[7];
             BgRow a = r, b = r;
-            for (int k = 0; k < 5; k++) {
+            for (int k = 0; k < 7; k++) {
                 out_a[k].assign(w, 7);
                 out_b[k].assign(w, 7);
             }
+            const bool noise = trial % 2 == 1;
             a.my = out_a[0].data(), a.vy = out_a[1].data(), a.mu = out_a[2].data();
             a.mv = out_a[3].data(), a.mask = out_a[4].data();
+            a.noise_y = noise ? out_a[5].data() : nullptr, a.noise_c = out_a[6].data();
             b.my = out_b[0].data(), b.vy = out_b[1].data(), b.mu = out_b[2].data();
             b.mv = out_b[3].data(), b.mask = out_b[4].data();
+            b.noise_y = noise ? out_b[5].data() : nullptr, b.noise_c = out_b[6].data();
             ref.bg_update_row(a);
             d.bg_update_row(b);
-            for (int k = 0; k < 5; k++)
+            for (int k = 0; k < 7; k++)
                 ck_assert_msg(out_a[k] == out_b[k],
                               "flags 0x%x, width %d, trial %d, output %d: differs from the "
                               "portable build", flags, w, trial, k);
