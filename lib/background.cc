@@ -326,27 +326,27 @@ Dsp Background::make_dsp()
 
 void NoiseSamples::begin()
 {
-    std::memset(y, 0, sizeof y);
-    std::memset(c, 0, sizeof c);
+    hist_.assign(8 * 256, 0);
     n = 0;
 }
 
 void NoiseSamples::sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *frozen, int w)
 {
     uint32_t count = 0; // a local: the histograms' stores would reload a member
+    uint32_t *hy[4] = {y(0), y(1), y(2), y(3)}, *hc[4] = {c(0), c(1), c(2), c(3)};
     if (dc) {
         for (int x = 0, k = 0; x < w; x += 4, k = (k + 1) & 3) {
             if (frozen[x])
                 continue;
-            y[k][dy[x]]++;
-            c[k][dc[x]]++;
+            hy[k][dy[x]]++;
+            hc[k][dc[x]]++;
             count++;
         }
     } else {
         for (int x = 0, k = 0; x < w; x += 4, k = (k + 1) & 3) {
             if (frozen[x])
                 continue;
-            y[k][dy[x]]++;
+            hy[k][dy[x]]++;
             count++;
         }
     }
@@ -380,8 +380,8 @@ void NoiseLevel::end(const NoiseSamples &s, double dt)
         return;
     uint32_t hy[256], hc[256];
     for (int v = 0; v < 256; v++) {
-        hy[v] = s.y[0][v] + s.y[1][v] + s.y[2][v] + s.y[3][v];
-        hc[v] = s.c[0][v] + s.c[1][v] + s.c[2][v] + s.c[3][v];
+        hy[v] = s.y(0)[v] + s.y(1)[v] + s.y(2)[v] + s.y(3)[v];
+        hc[v] = s.c(0)[v] + s.c(1)[v] + s.c(2)[v] + s.c(3)[v];
     }
     const double y = median_of(hy, s.n) / kMadPerSd;
     const double c = median_of(hc, s.n) / kMadPerSd;
@@ -493,7 +493,7 @@ size_t Background::memory_bytes() const
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
-           line_dc_.capacity();
+           line_dc_.capacity() + noise_samples_.memory_bytes();
 }
 
 void Background::swap_models()

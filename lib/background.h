@@ -27,13 +27,22 @@ uint32_t divide_small(uint32_t n, uint32_t d);
 // one before it to count the same level, as neighbours mostly do). Scratch,
 // not the model's state.
 struct NoiseSamples {
-    uint32_t y[4][256], c[4][256];
+    // y(k) and c(k): luma's and chroma's histogram k of 4, 256 counts each
+    // (on the heap, and only once the pixels are used).
+    uint32_t *y(int k) { return &hist_[(size_t)k * 256]; }
+    uint32_t *c(int k) { return &hist_[(size_t)(4 + k) * 256]; }
+    const uint32_t *y(int k) const { return &hist_[(size_t)k * 256]; }
+    const uint32_t *c(int k) const { return &hist_[(size_t)(4 + k) * 256]; }
     uint32_t n = 0;
     void begin();
     // One row's samples (every 4th pixel): |I - M| (dy) and the larger of
     // the chroma's differences (dc, null for grey frames); frozen marks
     // where tracks stand.
     void sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *frozen, int w);
+    size_t memory_bytes() const { return hist_.capacity() * sizeof(uint32_t); }
+
+private:
+    Vec<uint32_t> hist_;
 };
 
 struct NoiseLevel {
