@@ -41,6 +41,7 @@ ct_config default_config()
     c.start_score = 0.8f;
     c.report_lost_sd = 0.08f;
     c.pedestrian_test = CT_PEDESTRIAN_TEMPLATE;
+    c.size_gate = 0.35f;
     return c;
 }
 
@@ -177,6 +178,9 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
                     "config.pedestrian_test: %d is not CT_PEDESTRIAN_TEMPLATE (0) or "
                     "CT_PEDESTRIAN_SIZE (1)",
                     (int)c.pedestrian_test);
+    if (!in_range(c.size_gate, 0, 10))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.size_gate: %g is not in [0, 10]", (double)c.size_gate);
     if (out)
         *out = c;
     return CT_OK;

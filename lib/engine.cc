@@ -21,6 +21,7 @@ Engine::Engine(const ct_config &cfg) : cfg_(cfg)
 {
     ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
     min_rho_ = (int)(cfg.mean_shift_min_similarity * kQ16);
+    size_gate_.set_gate(cfg.size_gate);
 }
 
 void Engine::reset()
@@ -28,6 +29,7 @@ void Engine::reset()
     pixels_.reset();
     scene_.reset();
     size_.reset(0);
+    size_gate_.reset();
     tracks_.clear();
     reported_.clear();
     has_time_ = false;
@@ -222,6 +224,21 @@ void Engine::reidentify(const ct_detection *dets)
 
 void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image)
 {
+    // The size gate's line: every confirmed track a detector's box updated
+    // this step, but boxes cut by a known image's edge.
+    if (cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0) {
+        constexpr double kEdge = 2;
+        for (const Track &t : tracks_) {
+            if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
+                continue;
+            const ct_detection &d = dets[t.det_index];
+            if (image.known() && (d.left < kEdge || d.top < kEdge ||
+                                  d.left + d.width > image.width - kEdge ||
+                                  d.top + d.height > image.height - kEdge))
+                continue;
+            size_gate_.observe(d.top, d.height);
+        }
+    }
     if (!image.known())
         return;
     if (size_.image_height() != image.height)
@@ -268,6 +285,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
     saved_candidates_ = pixels_.candidates();
     const uint64_t next_id = next_id_;
     const SceneMotion scene = scene_;
+    const SizeGate size_gate = size_gate_;
     saved_size_ = size_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
@@ -287,6 +305,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
         pixels_.rollback();
         next_id_ = next_id;
         scene_ = scene;
+        size_gate_ = size_gate;
         size_ = saved_size_;
         last_us_ = last_us;
         has_time_ = has_time;
@@ -338,7 +357,15 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     low_dets_.clear();
     const float high =
         cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
+    // A detector's boxes far off the height its people have where they
+    // stand are ignored (size_gate; the pixels' candidates have their own
+    // size test).
+    const bool gate = cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
+    if (gate)
+        size_gate_.age(dt);
     for (size_t j = 0; j < n; j++) {
+        if (gate && !size_gate_.admits(dets[j]))
+            continue;
         if (dets[j].score >= high)
             pool_dets_.push_back((int)j);
         else if (dets[j].score >= cfg_.low_score)

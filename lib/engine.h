@@ -17,6 +17,7 @@
 #include "planes.h"
 #include "person_size.h"
 #include "scene.h"
+#include "size_gate.h"
 #include "templates.h"
 #include "track.h"
 
@@ -116,6 +117,7 @@ private:
     int min_rho_ = 0;         // mean_shift_min_similarity in Q16
     SceneMotion scene_;
     PersonSize size_;
+    SizeGate size_gate_; // a detector's people's height (size_gate)
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;

@@ -124,6 +124,9 @@ static void low_candidate_score(ct_config *c) { c->candidate_min_score = c->low_
 static void verify_two(ct_config *c) { c->verify_detections = 2; }
 static void test_two(ct_config *c) { c->pedestrian_test = 2; }
 static void test_negative(ct_config *c) { c->pedestrian_test = -1; }
+static void nan_size_gate(ct_config *c) { c->size_gate = NAN; }
+static void negative_size_gate(ct_config *c) { c->size_gate = -0.1f; }
+static void huge_size_gate(ct_config *c) { c->size_gate = 11; }
 static void nan_high(ct_config *c) { c->high_score = NAN; }
 static void high_above_one(ct_config *c) { c->high_score = 1.5f; }
 static void low_above_high(ct_config *c) { c->low_score = c->high_score + 0.1f; }
@@ -161,6 +164,9 @@ static const bad_case bad_cases[] = {
     {"config.verify_detections", verify_two, CT_ERROR_INVALID_ARGUMENT},
     {"config.pedestrian_test", test_two, CT_ERROR_INVALID_ARGUMENT},
     {"config.pedestrian_test", test_negative, CT_ERROR_INVALID_ARGUMENT},
+    {"config.size_gate", nan_size_gate, CT_ERROR_INVALID_ARGUMENT},
+    {"config.size_gate", negative_size_gate, CT_ERROR_INVALID_ARGUMENT},
+    {"config.size_gate", huge_size_gate, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", nan_high, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", high_above_one, CT_ERROR_INVALID_ARGUMENT},
     {"config.low_score", low_above_high, CT_ERROR_INVALID_ARGUMENT},

@@ -307,6 +307,68 @@ START_TEST(max_tracks_bounds_live_tracks)
 }
 END_TEST
 
+/* The size gate: four people walk across at feet rows 200 to 500, their
+ * heights half their feet's row (a camera above a ground); after two
+ * seconds a detector's false positive, a box a third of the height people
+ * have at its feet, shows every step for a second. With size_gate at its
+ * default it never becomes a track; at 0 (off) it does. While the line is
+ * unknown (the first steps) nothing is ignored. */
+static int run_size_scene(float gate, int *walkers_seen)
+{
+    ct_config cfg = test_config();
+    cfg.size_gate = gate;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    int false_reported = 0;
+    *walkers_seen = 0;
+    for (int k = 0; k < 30; k++) {
+        const int64_t us = k * SEC / 10;
+        ct_detection d[5];
+        size_t n = 0;
+        for (int p = 0; p < 4; p++) {
+            const float foot = 200 + 100 * p, h = foot / 2;
+            d[n++] = test_det(50 + 40 * (float)us / SEC + 300 * (p % 2), foot - h, 0.4f * h, h,
+                              0.95f);
+        }
+        if (k >= 20) /* feet at row 300, where people are 150 tall */
+            d[n++] = test_det(900, 300 - 50, 20, 50, 0.95f);
+        const size_t m = test_step(t, us, d, n, out);
+        int walkers = 0;
+        for (size_t i = 0; i < m; i++) {
+            if (out[i].left > 850)
+                false_reported++;
+            else
+                walkers++;
+        }
+        if (k == 29)
+            *walkers_seen = walkers;
+    }
+    ct_tracker_destroy(t);
+    return false_reported;
+}
+
+START_TEST(size_gate_ignores_boxes_off_the_peoples_height)
+{
+    int walkers;
+    ck_assert_int_eq(run_size_scene(test_config().size_gate, &walkers), 0);
+    ck_assert_int_eq(walkers, 4);
+    ck_assert_int_gt(run_size_scene(0, &walkers), 0);
+    ck_assert_int_eq(walkers, 4);
+}
+END_TEST
+
+/* Before anything is known of the people's size, no box is ignored: the
+ * first step's absurdly small box is a track like the others. */
+START_TEST(size_gate_waits_for_the_line)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    ct_detection d[2] = {test_det(50, 100, 40, 100, 0.95f), test_det(600, 180, 8, 20, 0.95f)};
+    ck_assert_uint_eq(test_step(t, 0, d, 2, out), 2);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *lifecycle_suite(void)
 {
     Suite *s = suite_create("lifecycle");
@@ -322,6 +384,8 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, max_tracks_bounds_live_tracks);
     tcase_add_test(tc, leaving_the_image_ends_the_track);
     tcase_add_test(tc, lost_tracks_reported_while_hidden);
+    tcase_add_test(tc, size_gate_ignores_boxes_off_the_peoples_height);
+    tcase_add_test(tc, size_gate_waits_for_the_line);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -215,6 +215,14 @@ typedef struct ct_config {
      * candidate its score (1 or 0 with CT_PEDESTRIAN_SIZE; the candidates'
      * votes and distances are reported either way). */
     int32_t pedestrian_test;
+    /* With source CT_SOURCE_DETECTIONS: as it runs, the tracker learns how
+     * tall its confirmed people are where their feet stand (a line in the
+     * feet's row, its samples fading with a time constant of half a second
+     * so that a moving camera is followed), and ignores a detection whose
+     * height differs from the line's by more than this natural log ratio
+     * (the default, 0.35: a detection 42% taller or 30% shorter). 0 ignores
+     * none. In [0, 10]. */
+    float size_gate;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the

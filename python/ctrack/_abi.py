@@ -71,6 +71,7 @@ class Config(C.Structure):
         ("start_score", C.c_float),
         ("report_lost_sd", C.c_float),
         ("pedestrian_test", C.c_int32),
+        ("size_gate", C.c_float),
     ]
 
 
