@@ -51,21 +51,18 @@ void Describer::describe(const Planes &img, double left, double top, double widt
     const double cw = width / kGridX, ch = height / kGridY;
     // Luma: 3 sub-blocks a cell each way; chroma: the cell.
     Span lx[3 * kGridX], ly[3 * kGridY], cx[kGridX], cy[kGridY];
-    const int cplane_w = (img.width + 1) >> 1, cplane_h = (img.height + 1) >> 1;
-    for (int gx = 0; gx < kGridX; gx++) {
-        const double x0 = left + gx * cw;
-        for (int sx = 0; sx < 3; sx++)
-            lx[3 * gx + sx] =
-                span_of(x0 + sx * cw / 3, x0 + (sx + 1) * cw / 3, 0, img.width);
-        cx[gx] = span_of(x0, x0 + cw, 1, cplane_w);
-    }
-    for (int gy = 0; gy < kGridY; gy++) {
-        const double y0 = top + gy * ch;
-        for (int sy = 0; sy < 3; sy++)
-            ly[3 * gy + sy] =
-                span_of(y0 + sy * ch / 3, y0 + (sy + 1) * ch / 3, 0, img.height);
-        cy[gy] = span_of(y0, y0 + ch, 1, cplane_h);
-    }
+    // Along one axis: `cells` cells of `cell` from `start`, over `size`
+    // luma samples.
+    auto axis = [](double start, double cell, int cells, int size, Span *luma, Span *chroma) {
+        for (int g = 0; g < cells; g++) {
+            const double a = start + g * cell;
+            for (int k = 0; k < 3; k++)
+                luma[3 * g + k] = span_of(a + k * cell / 3, a + (k + 1) * cell / 3, 0, size);
+            chroma[g] = span_of(a, a + cell, 1, (size + 1) >> 1);
+        }
+    };
+    axis(left, cw, kGridX, img.width, lx, cx);
+    axis(top, ch, kGridY, img.height, ly, cy);
     // out[(cell) * kDescDim + k] for k in [0, 9) luma, 9 and 10 chroma.
     auto sums = [&](const uint8_t *p, int stride, int step, const Span *xs, int nx,
                     const Span *ys, int ny, int k0, int dk, float scale) {

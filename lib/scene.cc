@@ -4,12 +4,14 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "tunable.h"
+
 namespace ctrack {
 
 namespace {
 
 // How fast the scale follows the innovations, in seconds.
-constexpr double kTimeConstantDefault = 0.3;
+CT_TUNABLE(kTimeConstant, "CTRACK_SCENE_TIME", 0.3);
 // One innovation counts at most this much (a wrong match, a person who
 // turns): about three standard deviations.
 constexpr double kMaxNis = 9.0;
@@ -17,22 +19,7 @@ constexpr double kMaxNis = 9.0;
 constexpr double kMaxScale = 900.0;
 // The scale's excess over 1 at which the reported box goes halfway from the
 // estimate to the detection.
-constexpr double kFollowHalfDefault = 20.0;
-
-#ifdef CT_TUNING
-// A tuning build (meson -Dtuning=true, never shipped) reads the two from the
-// environment, for the sweeps of docs/tuning.md.
-double tunable(const char *name, double value)
-{
-    const char *s = std::getenv(name);
-    return s ? std::atof(s) : value;
-}
-const double kTimeConstant = tunable("CTRACK_SCENE_TIME", kTimeConstantDefault);
-const double kFollowHalf = tunable("CTRACK_SCENE_FOLLOW", kFollowHalfDefault);
-#else
-constexpr double kTimeConstant = kTimeConstantDefault;
-constexpr double kFollowHalf = kFollowHalfDefault;
-#endif
+CT_TUNABLE(kFollowHalf, "CTRACK_SCENE_FOLLOW", 20.0);
 
 } // namespace
 

@@ -1,31 +1,17 @@
 #include "size_gate.h"
 
 #include <cmath>
-#include <cstdlib>
+
+#include "tunable.h"
 
 namespace ctrack {
 
 namespace {
 
 // How fast an observation's weight fades, in seconds.
-constexpr double kTimeDefault = 0.5;
+CT_TUNABLE(kTime, "CTRACK_SIZE_TIME", 0.5);
 // The line speaks once this much weight stands behind it.
-constexpr double kMinWeightDefault = 10.0;
-
-#ifdef CT_TUNING
-// A tuning build (meson -Dtuning=true, never shipped) reads them from the
-// environment, for the sweeps of docs/tuning.md.
-double tunable(const char *name, double value)
-{
-    const char *s = std::getenv(name);
-    return s ? std::atof(s) : value;
-}
-const double kTime = tunable("CTRACK_SIZE_TIME", kTimeDefault);
-const double kMinWeight = tunable("CTRACK_SIZE_WEIGHT", kMinWeightDefault);
-#else
-constexpr double kTime = kTimeDefault;
-constexpr double kMinWeight = kMinWeightDefault;
-#endif
+CT_TUNABLE(kMinWeight, "CTRACK_SIZE_WEIGHT", 10.0);
 
 } // namespace
 
