@@ -356,6 +356,14 @@ void NoiseSamples::sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *f
 namespace {
 
 // The median of a histogram of n values, half a level finer.
+// The sum of four histograms taken in turn (256 counts each).
+void sum_of_four(const uint32_t *a, const uint32_t *b, const uint32_t *c, const uint32_t *d,
+                 uint32_t *out)
+{
+    for (int v = 0; v < 256; v++)
+        out[v] = a[v] + b[v] + c[v] + d[v];
+}
+
 double median_of(const uint32_t *hist, uint32_t n)
 {
     uint32_t below = 0;
@@ -379,10 +387,8 @@ void NoiseLevel::end(const NoiseSamples &s, double dt)
     if (s.n == 0)
         return;
     uint32_t hy[256], hc[256];
-    for (int v = 0; v < 256; v++) {
-        hy[v] = s.y(0)[v] + s.y(1)[v] + s.y(2)[v] + s.y(3)[v];
-        hc[v] = s.c(0)[v] + s.c(1)[v] + s.c(2)[v] + s.c(3)[v];
-    }
+    sum_of_four(s.y(0), s.y(1), s.y(2), s.y(3), hy);
+    sum_of_four(s.c(0), s.c(1), s.c(2), s.c(3), hc);
     const double y = median_of(hy, s.n) / kMadPerSd;
     const double c = median_of(hc, s.n) / kMadPerSd;
     const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
@@ -464,19 +470,10 @@ double Background::exposure_ratio(const Planes &img, const Rect *frozen, int n_f
         }
     }
     uint32_t hist[256];
-    for (int v = 0; v < 256; v++)
-        hist[v] = hists[0][v] + hists[1][v] + hists[2][v] + hists[3][v];
+    sum_of_four(hists[0], hists[1], hists[2], hists[3], hist);
     if (n < kMinRatioSamples)
         return 1.0;
-    uint32_t below = 0;
-    int median = 255;
-    for (int v = 0; v < 256; v++) {
-        if (2 * (below + hist[v]) >= n) {
-            median = v;
-            break;
-        }
-        below += hist[v];
-    }
+    const int median = (int)median_of(hist, n);
     return std::abs(median - kRatioOne) <= kRatioDeadband ? 1.0 : (double)median / kRatioOne;
 }
 

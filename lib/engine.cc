@@ -224,26 +224,15 @@ void Engine::reidentify(const ct_detection *dets)
 
 void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image)
 {
-    // The size gate's line: every confirmed track a detector's box updated
-    // this step, but boxes cut by a known image's edge.
-    if (cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0) {
-        constexpr double kEdge = 2;
-        for (const Track &t : tracks_) {
-            if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
-                continue;
-            const ct_detection &d = dets[t.det_index];
-            if (image.known() && (d.left < kEdge || d.top < kEdge ||
-                                  d.left + d.width > image.width - kEdge ||
-                                  d.top + d.height > image.height - kEdge))
-                continue;
-            size_gate_.observe(d.top, d.height);
-        }
-    }
-    if (!image.known())
+    // From the confirmed tracks a box updated this step, but boxes touching
+    // a known image's edge (they may hold part of a person): the size
+    // gate's line (a detector's boxes, whatever their score) and, when the
+    // image is known, the people's size (confident boxes, whole blobs).
+    const bool gate = cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
+    if (!gate && !image.known())
         return;
-    if (size_.image_height() != image.height)
+    if (image.known() && size_.image_height() != image.height)
         size_.reset(image.height);
-    // A box touching the image's edge may hold part of a person.
     constexpr double kEdge = 2;
     const float score =
         cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
@@ -251,14 +240,19 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
             continue;
         const ct_detection &d = dets[t.det_index];
-        if (cfg_.source == CT_SOURCE_PIXELS && !pixels_.whole((size_t)t.det_index))
+        if (image.known() && (d.left < kEdge || d.top < kEdge ||
+                              d.left + d.width > image.width - kEdge ||
+                              d.top + d.height > image.height - kEdge))
             continue;
-        if (d.score < score || d.left < kEdge || d.top < kEdge ||
-            d.left + d.width > image.width - kEdge || d.top + d.height > image.height - kEdge)
+        if (gate)
+            size_gate_.observe(d.top, d.height);
+        if (!image.known() || d.score < score ||
+            (cfg_.source == CT_SOURCE_PIXELS && !pixels_.whole((size_t)t.det_index)))
             continue;
         size_.observe(d.top, d.height, d.width);
     }
-    size_.learn();
+    if (image.known())
+        size_.learn();
 }
 
 void Engine::recover(const ct_detection *dets)

@@ -86,6 +86,13 @@ void MeanShift::list_touched()
     n_touched_ = n;
 }
 
+void MeanShift::chroma_columns(const Planes &img, int x0, int step, int ncols)
+{
+    chroma_.resize(ncols);
+    for (int i = 0; i < ncols; i++)
+        chroma_[i] = ((x0 + i * step) >> 1) * (int32_t)img.c_step;
+}
+
 void MeanShift::clear_hist()
 {
     for (int i = 0; i < n_touched_; i++)
@@ -119,11 +126,8 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
         columns_[i] = col_term(dx);
     }
     // Each column's offset in the chroma rows.
-    if (img.color) {
-        chroma_.resize(ncols);
-        for (int i = 0; i < ncols; i++)
-            chroma_[i] = ((x0 + i * s) >> 1) * (int32_t)img.c_step;
-    }
+    if (img.color)
+        chroma_columns(img, x0, s, ncols);
     // The loop works on locals, which the compiler keeps in registers: the
     // members would be reloaded after every store.
     const int nrows = (y1 - y0) / s + 1;
@@ -243,9 +247,7 @@ void MeanShift::background(const Planes &img, double cx, double cy, double w, do
     // The ring's columns, with their chroma offsets; those inside the box
     // (|x - cx| < iw) are one run [ja, jb), left out on the box's rows.
     const int ncols = (x1 - x0) / s + 1;
-    chroma_.resize(ncols);
-    for (int j = 0; j < ncols; j++)
-        chroma_[j] = ((x0 + j * s) >> 1) * (int32_t)img.c_step;
+    chroma_columns(img, x0, s, ncols);
     int ja = 0;
     while (ja < ncols && !(std::fabs(x0 + ja * s - cx) < iw))
         ja++;

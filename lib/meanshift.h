@@ -200,6 +200,9 @@ private:
     void weight_against_background(const Planes &img, double cx, double cy, double w,
                                    double h, ColorModel *m);
     void list_touched();
+    // chroma_: the offsets in a chroma row of columns x0, x0 + step, ...
+    // (ncols of them).
+    void chroma_columns(const Planes &img, int x0, int step, int ncols);
     void clear_hist();
 
     // This window's samples, row by row: n_runs_ runs, their bins in order.
