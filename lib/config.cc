@@ -38,10 +38,11 @@ ct_config default_config()
     c.reid_max_speed = 1.5f;
     c.candidate_min_score = 0.8f;
     c.verify_detections = 0;
-    c.start_score = 0.8f;
+    c.start_score = 0.7f;
     c.report_lost_sd = 0.08f;
     c.pedestrian_test = CT_PEDESTRIAN_TEMPLATE;
     c.size_gate = 0.35f;
+    c.confirm_score = 0.95f;
     return c;
 }
 
@@ -181,6 +182,9 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     if (!in_range(c.size_gate, 0, 10))
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.size_gate: %g is not in [0, 10]", (double)c.size_gate);
+    if (!in_range(c.confirm_score, 0, 1))
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
+                    "config.confirm_score: %g is not in [0, 1]", (double)c.confirm_score);
     if (out)
         *out = c;
     return CT_OK;

@@ -30,6 +30,7 @@ void Engine::reset()
     scene_.reset();
     size_.reset(0);
     size_gate_.reset();
+    scores_.reset();
     tracks_.clear();
     reported_.clear();
     has_time_ = false;
@@ -88,6 +89,11 @@ void Engine::learn_models(const Planes &img)
     }
 }
 
+float Engine::confirm_score() const
+{
+    return cfg_.source == CT_SOURCE_DETECTIONS ? confirm_ : 0.0f;
+}
+
 void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
 {
     // The scene's motion is learnt from a detector's boxes (the pixels'
@@ -99,7 +105,8 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     t.correct(d, cfg_.detection_noise, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
-    else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits) {
+    else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&
+             t.best_score >= confirm_score()) {
         t.state = CT_TRACK_CONFIRMED;
         t.id = next_id_++;
     }
@@ -109,7 +116,7 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
 {
     Track t;
     t.start(d, cfg_.detection_noise, index, t_us);
-    if (confirm || t.hits >= cfg_.min_hits) {
+    if (confirm || (t.hits >= cfg_.min_hits && d.score >= confirm_score())) {
         t.state = CT_TRACK_CONFIRMED;
         t.id = next_id_++;
     }
@@ -280,6 +287,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
     const uint64_t next_id = next_id_;
     const SceneMotion scene = scene_;
     const SizeGate size_gate = size_gate_;
+    const ScoreScale scores = scores_;
     saved_size_ = size_;
     const int64_t last_us = last_us_;
     const bool has_time = has_time_;
@@ -300,6 +308,7 @@ void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_det
         next_id_ = next_id;
         scene_ = scene;
         size_gate_ = size_gate;
+        scores_ = scores;
         size_ = saved_size_;
         last_us_ = last_us;
         has_time_ = has_time;
@@ -357,6 +366,14 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     const bool gate = cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
     if (gate)
         size_gate_.age(dt);
+    // The detector's scale of scores, learnt from the boxes that may start
+    // a track, bounds the score that confirms one (score_scale.h).
+    if (cfg_.source == CT_SOURCE_DETECTIONS) {
+        for (size_t j = 0; j < n; j++)
+            if (dets[j].score >= cfg_.start_score)
+                scores_.observe(dets[j].score);
+        confirm_ = scores_.confirm(cfg_.confirm_score);
+    }
     for (size_t j = 0; j < n; j++) {
         if (gate && !size_gate_.admits(dets[j]))
             continue;
@@ -414,8 +431,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     age_unmatched(t_us, image);
     // New tracks from the high-score detections nobody claimed that reach
     // start_score (a detector's boxes only: the pixels' candidates start
-    // at candidate_min_score). The first step confirms them at once: there
-    // is no earlier frame to wait for.
+    // at candidate_min_score). A tentative track is confirmed after
+    // min_hits once one of its detections reached confirm_score (update()).
+    // The first step confirms them at once: there is no earlier frame to
+    // wait for.
     const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : cfg_.start_score;
     for (int j : pool_dets_) {
         if ((int)tracks_.size() >= cfg_.max_tracks)

@@ -17,6 +17,7 @@
 #include "planes.h"
 #include "person_size.h"
 #include "scene.h"
+#include "score_scale.h"
 #include "size_gate.h"
 #include "templates.h"
 #include "track.h"
@@ -80,6 +81,11 @@ private:
                const ct_detection *dets, double min_iou);
     void update(Track &t, const ct_detection &d, int index, int64_t t_us);
     void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
+    // The score one of a tentative track's detections must reach before it
+    // is confirmed: with a detector's boxes confirm_score, or less where
+    // the detector's scores are lower (score_scale.h); none with the
+    // pixels' candidates.
+    float confirm_score() const;
     // Tracks no detection updated: lost, or removed when tentative, past
     // their lifetime or outside the image.
     void age_unmatched(int64_t t_us, ImageSize image);
@@ -118,6 +124,8 @@ private:
     SceneMotion scene_;
     PersonSize size_;
     SizeGate size_gate_; // a detector's people's height (size_gate)
+    ScoreScale scores_;  // a detector's scale of scores (confirm_score)
+    float confirm_ = 0;  // this step's score that confirms a track
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;

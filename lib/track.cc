@@ -66,6 +66,7 @@ void Track::start(const ct_detection &d, double detection_noise, int index, int6
     det_index = index;
     class_id = d.class_id;
     score = d.score;
+    best_score = d.score;
 }
 
 void Track::predict(double dt, double motion_noise)
@@ -106,6 +107,7 @@ void Track::correct(const ct_detection &d, double detection_noise, int index, in
     det_index = index;
     class_id = d.class_id;
     score = d.score;
+    best_score = std::max(best_score, d.score);
 }
 
 void Track::follow(double detection_noise)

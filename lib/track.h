@@ -49,6 +49,7 @@ struct Track {
     int det_index = -1;
     int class_id = 0;
     float score = 0;
+    float best_score = 0; // the highest score of its detections
     // The box association compares with detections this step: the
     // prediction, or where mean shift moved it.
     Box cue{0, 0, 0, 0};

@@ -127,6 +127,9 @@ static void test_negative(ct_config *c) { c->pedestrian_test = -1; }
 static void nan_size_gate(ct_config *c) { c->size_gate = NAN; }
 static void negative_size_gate(ct_config *c) { c->size_gate = -0.1f; }
 static void huge_size_gate(ct_config *c) { c->size_gate = 11; }
+static void nan_confirm_score(ct_config *c) { c->confirm_score = NAN; }
+static void negative_confirm_score(ct_config *c) { c->confirm_score = -0.1f; }
+static void huge_confirm_score(ct_config *c) { c->confirm_score = 1.5f; }
 static void nan_high(ct_config *c) { c->high_score = NAN; }
 static void high_above_one(ct_config *c) { c->high_score = 1.5f; }
 static void low_above_high(ct_config *c) { c->low_score = c->high_score + 0.1f; }
@@ -167,6 +170,9 @@ static const bad_case bad_cases[] = {
     {"config.size_gate", nan_size_gate, CT_ERROR_INVALID_ARGUMENT},
     {"config.size_gate", negative_size_gate, CT_ERROR_INVALID_ARGUMENT},
     {"config.size_gate", huge_size_gate, CT_ERROR_INVALID_ARGUMENT},
+    {"config.confirm_score", nan_confirm_score, CT_ERROR_INVALID_ARGUMENT},
+    {"config.confirm_score", negative_confirm_score, CT_ERROR_INVALID_ARGUMENT},
+    {"config.confirm_score", huge_confirm_score, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", nan_high, CT_ERROR_INVALID_ARGUMENT},
     {"config.high_score", high_above_one, CT_ERROR_INVALID_ARGUMENT},
     {"config.low_score", low_above_high, CT_ERROR_INVALID_ARGUMENT},

@@ -6,10 +6,11 @@
 
 #define SEC 1000000LL
 
-/* A person walking right at `speed` px/s, seen at time us. */
+/* A person walking right at `speed` px/s, seen at time us by a detector
+ * that is sure of them (a score above confirm_score). */
 static ct_detection walker(int64_t us, float x0, float speed)
 {
-    return test_det(x0 + speed * (float)us / SEC, 100, 30, 80, 0.9f);
+    return test_det(x0 + speed * (float)us / SEC, 100, 30, 80, 0.97f);
 }
 
 START_TEST(tentative_tracks_are_not_reported)
@@ -369,6 +370,90 @@ START_TEST(size_gate_waits_for_the_line)
 }
 END_TEST
 
+/* Three people walk; two are sure detections (0.99) from the start. The
+ * third's detections score between start_score and confirm_score: it is
+ * followed but not reported, however long it lasts, until one detection
+ * reaches confirm_score; with confirm_score at start_score it is confirmed
+ * after min_hits like the others. Returns the step (from 1) at which it
+ * was first reported, 0 if never; `sure_at` is the step whose detection
+ * scores 0.99 (0: none). */
+static int run_middling_scores(float confirm_score, int sure_at)
+{
+    ct_config cfg = test_config();
+    cfg.confirm_score = confirm_score;
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    const float middling = (cfg.start_score + test_config().confirm_score) / 2;
+    int reported = 0;
+    uint64_t id = 0;
+    test_step(t, 0, NULL, 0, out); /* the first step confirms at once: not this one */
+    for (int k = 1; k <= 20; k++) {
+        ct_detection d[3] = {walker(k * SEC / 10, 100, 50), walker(k * SEC / 10, 100, 50),
+                             walker(k * SEC / 10, 100, 50)};
+        d[0].score = k == sure_at ? 0.99f : middling;
+        d[1].top = 300;
+        d[2].top = 500;
+        d[1].score = d[2].score = 0.99f;
+        size_t n = test_step(t, k * SEC / 10, d, 3, out);
+        bool seen = false;
+        for (size_t i = 0; i < n; i++) {
+            if (out[i].top > 200)
+                continue;
+            seen = true;
+            if (!reported) {
+                reported = k;
+                id = out[i].id;
+            }
+            ck_assert_uint_eq(out[i].id, id);
+            ck_assert_int_eq(out[i].state, CT_TRACK_CONFIRMED);
+        }
+        ck_assert(seen || !reported); /* once confirmed, middling scores keep it */
+        ck_assert_uint_eq(n - seen, k >= cfg.min_hits ? 2 : 0);
+    }
+    ct_tracker_destroy(t);
+    return reported;
+}
+
+START_TEST(middling_scores_confirm_once_the_detector_is_sure)
+{
+    const float confirm = test_config().confirm_score;
+    ck_assert_float_gt(confirm, test_config().start_score);
+    ck_assert_int_eq(run_middling_scores(confirm, 0), 0);
+    ck_assert_int_eq(run_middling_scores(confirm, 12), 12);
+    ck_assert_int_eq(run_middling_scores(confirm, 1), 3); /* min_hits, as usual */
+    ck_assert_int_eq(run_middling_scores(test_config().start_score, 0), 3);
+    ck_assert_int_eq(run_middling_scores(0, 0), 3);
+}
+END_TEST
+
+/* A detector that is never as sure as confirm_score (every box 0.85): its
+ * own best boxes are what confirm a track, after min_hits. */
+START_TEST(a_detector_never_that_sure_still_confirms)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    test_step(t, 0, NULL, 0, out);
+    for (int k = 1; k <= 5; k++) {
+        ct_detection d[2] = {walker(k * SEC / 10, 100, 50), walker(k * SEC / 10, 300, 50)};
+        d[0].score = d[1].score = 0.85f;
+        ck_assert_uint_eq(test_step(t, k * SEC / 10, d, 2, out), k >= 3 ? 2 : 0);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* The first step's tracks are confirmed at once, middling scores too. */
+START_TEST(first_step_confirms_middling_scores)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    ct_detection d = walker(0, 100, 0);
+    d.score = (test_config().start_score + test_config().confirm_score) / 2;
+    ck_assert_uint_eq(test_step(t, 0, &d, 1, out), 1);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *lifecycle_suite(void)
 {
     Suite *s = suite_create("lifecycle");
@@ -386,6 +471,9 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, lost_tracks_reported_while_hidden);
     tcase_add_test(tc, size_gate_ignores_boxes_off_the_peoples_height);
     tcase_add_test(tc, size_gate_waits_for_the_line);
+    tcase_add_test(tc, middling_scores_confirm_once_the_detector_is_sure);
+    tcase_add_test(tc, first_step_confirms_middling_scores);
+    tcase_add_test(tc, a_detector_never_that_sure_still_confirms);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -87,7 +87,7 @@ static void walk(ct_tracker *t, uint32_t format, bool person_stays, ct_track *la
         double cx = 60 + 4.0 * k, cy = 120;
         bool present = k < 10 || person_stays;
         draw(&im, present ? cx : -1, cy);
-        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.97f);
         size_t n = step_pixels(t, &im, format, us, &d, k < 10 ? 1 : 0, out);
         if (k >= 10 && n > 0 && out[0].state == CT_TRACK_CONFIRMED)
             *err = fmax(*err, fabs(out[0].barycenter_x - cx) + fabs(out[0].barycenter_y - cy));
@@ -177,7 +177,7 @@ START_TEST(lets_go_at_the_border)
     for (int k = 0; k < 14; k++) {
         double cx = 250 + 6.0 * k, cy = 120;
         draw(&im, cx, cy);
-        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.97f);
         n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, &d, k < 10 ? 1 : 0, out);
     }
     ck_assert_uint_eq(n, 0);
@@ -212,8 +212,8 @@ START_TEST(does_not_follow_behind_an_occluder)
                 im.uv[y * W + 2 * x + 1] = im.v[y * (W / 2) + x];
             }
         bool hidden = fabs(bx - ax) < 20;
-        ct_detection d[2] = {test_det((float)(ax - 15), 85, 30, 70, 0.9f),
-                             test_det((float)(bx - 15), 90, 30, 70, 0.9f)};
+        ct_detection d[2] = {test_det((float)(ax - 15), 85, 30, 70, 0.97f),
+                             test_det((float)(bx - 15), 90, 30, 70, 0.97f)};
         size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, hidden ? d + 1 : d,
                                hidden ? 1 : 2, out);
         for (size_t i = 0; hidden && i < n; i++)
@@ -241,7 +241,7 @@ static uint64_t reappear(int appearance)
         bool hidden = k >= 12 && k < 27;
         double cx = k < 12 ? 60 + 6.0 * k : 126 + 1.0 * (k - 12), cy = 120;
         draw(&im, hidden ? -1 : cx, cy);
-        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.9f);
+        ct_detection d = test_det((float)(cx - 15), (float)(cy - 35), 30, 70, 0.97f);
         size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, &d, hidden ? 0 : 1, out);
         if (n && !first)
             first = out[0].id;
@@ -280,7 +280,7 @@ static void *run_pixels(void *arg)
     for (int k = 0; k < 20; k++) {
         double cx = 60 + 5.0 * k;
         draw(&im, cx, 120);
-        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.9f);
+        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.97f);
         ct_frame f = frame_of(&im, r->format, k * SEC / 10);
         size_t count = 0;
         if (ct_tracker_feed(t, &f, k % 4 == 3 ? NULL : &d, k % 4 == 3 ? 0 : 1) != CT_OK ||
@@ -347,7 +347,7 @@ START_TEST(pixels_alone)
                  fabs(out[i].barycenter_y - 120) <= 12;
     ck_assert_msg(found, "no track on the person among %zu", n);
     /* Detections from the host are refused in this mode. */
-    ct_detection d = test_det(10, 10, 20, 40, 0.9f);
+    ct_detection d = test_det(10, 10, 20, 40, 0.97f);
     ct_frame f = frame_of(&im, CT_FORMAT_I420, 31 * SEC / 10);
     ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "CT_SOURCE_PIXELS"));
@@ -523,9 +523,9 @@ static size_t drive_by(int verify, ct_candidate *cand, size_t *nc, ct_track *out
         draw(&im, -1, 0);
         draw_pedestrian(&im, cx, 45);
         draw_car(&im, car_x, 170);
-        const ct_detection d[3] = {test_det((float)(cx - 15), 45, 30, 70, 0.9f),
-                                   test_det((float)car_x, 170, 100, 40, 0.9f),
-                                   test_det(270, 20, 30, 70, 0.9f)};
+        const ct_detection d[3] = {test_det((float)(cx - 15), 45, 30, 70, 0.97f),
+                                   test_det((float)car_x, 170, 100, 40, 0.97f),
+                                   test_det(270, 20, 30, 70, 0.97f)};
         n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, d, 3, out);
         ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], nc), CT_OK);
     }
@@ -568,7 +568,7 @@ START_TEST(frames_with_and_without_pixels)
     for (int k = 0; k < 20; k++) {
         double cx = 60 + 4.0 * k;
         draw(&im, cx, 120);
-        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.9f);
+        ct_detection d = test_det((float)(cx - 15), 85, 30, 70, 0.97f);
         if (k % 3 == 0)
             ck_assert_uint_eq(test_step(t, k * SEC / 10, &d, 1, out), 1);
         else

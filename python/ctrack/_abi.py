@@ -72,6 +72,7 @@ class Config(C.Structure):
         ("report_lost_sd", C.c_float),
         ("pedestrian_test", C.c_int32),
         ("size_gate", C.c_float),
+        ("confirm_score", C.c_float),
     ]
 
 

@@ -103,6 +103,7 @@ void fuzz_config(FuzzedDataProvider &in, ct_config *cfg)
     f(25, &cfg->report_lost_sd, -1.0f, 20.0f);
     i(26, &cfg->pedestrian_test, -1, 2);
     f(27, &cfg->size_gate, -1.0f, 12.0f);
+    f(28, &cfg->confirm_score, -0.5f, 1.5f);
 }
 
 // The struct as a caller built against another header passes it: its size

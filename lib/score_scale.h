@@ -1,0 +1,37 @@
+// The scale of a detector's scores, learnt as the tracker runs: how the
+// scores of its boxes that may start a track (start_score and above) are
+// spread. A track is confirmed once one of its detections reached
+// confirm_score (ct_config); a detector whose scores rarely or never reach
+// it (a confidence capped at 0.9, a score on a scale of its own) would
+// then confirm almost nothing. So the score asked for is never above the
+// one its best 40% of boxes reach: with the public MOTChallenge
+// detections that is above 0.95 and changes nothing; with a detector that
+// is never that sure, its own best boxes confirm tracks
+// (docs/tuning.md, "Confirmation").
+#ifndef CTRACK_SCORE_SCALE_H
+#define CTRACK_SCORE_SCALE_H
+
+#include <cstdint>
+
+namespace ctrack {
+
+class ScoreScale {
+public:
+    // Forgets what it learnt.
+    void reset();
+    // A detection's score that reached start_score.
+    void observe(float score);
+    // The score a tentative track's detection must reach to confirm it:
+    // `wanted` (confirm_score), or lower when the detector's best 40% of
+    // boxes score less (after observe()s; `wanted` before any).
+    float confirm(float wanted) const;
+
+private:
+    static constexpr int kBins = 100; // scores in [0, 1] by hundredths
+    uint32_t count_[kBins] = {};
+    uint32_t total_ = 0;
+};
+
+} // namespace ctrack
+
+#endif
