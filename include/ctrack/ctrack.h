@@ -226,13 +226,17 @@ typedef struct ct_config {
     float size_gate;
     /* With source CT_SOURCE_DETECTIONS: a tentative track is confirmed
      * (given an id and reported) only once one of its detections scored at
-     * least this, besides its min_hits hits; the tracks of the first step
-     * after create or reset are confirmed at once. A detector's middling
-     * scores are often wrong (on the six MOTChallenge 2015 sequences, 56% of
-     * the public boxes scoring 0.8 to 0.95 match no one at IoU 0.5, 13% of
-     * those above), and its false boxes come back frame after frame: they
-     * may start tracks, which count once the detector was sure. In [0, 1];
-     * at or under start_score, every track is confirmed after min_hits. */
+     * least this, besides its min_hits hits, or at least what the best 40%
+     * of the detector's boxes score (learnt as the tracker runs, over the
+     * boxes that reach start_score) when that is lower, so that a detector
+     * that is never this sure still confirms tracks; the tracks of the
+     * first step after create or reset are confirmed at once. A
+     * detector's middling scores are often wrong (on the six MOTChallenge
+     * 2015 sequences, 56% of the public boxes scoring 0.8 to 0.95 match no
+     * one at IoU 0.5, 13% of those above), and its false boxes come back
+     * frame after frame: they may start tracks, which count once the
+     * detector was sure. In [0, 1]; at or under start_score, every track
+     * is confirmed after min_hits. */
     float confirm_score;
 } ct_config;
 
