@@ -89,11 +89,6 @@ void Engine::learn_models(const Planes &img)
     }
 }
 
-float Engine::confirm_score() const
-{
-    return cfg_.source == CT_SOURCE_DETECTIONS ? confirm_ : 0.0f;
-}
-
 void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
 {
     // The scene's motion is learnt from a detector's boxes (the pixels'
@@ -106,7 +101,7 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
     else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&
-             t.best_score >= confirm_score()) {
+             t.best_score >= confirm_) {
         t.state = CT_TRACK_CONFIRMED;
         t.id = next_id_++;
     }
@@ -116,7 +111,7 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
 {
     Track t;
     t.start(d, cfg_.detection_noise, index, t_us);
-    if (confirm || (t.hits >= cfg_.min_hits && d.score >= confirm_score())) {
+    if (confirm || (t.hits >= cfg_.min_hits && d.score >= confirm_)) {
         t.state = CT_TRACK_CONFIRMED;
         t.id = next_id_++;
     }
@@ -235,7 +230,7 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
     // a known image's edge (they may hold part of a person): the size
     // gate's line (a detector's boxes, whatever their score) and, when the
     // image is known, the people's size (confident boxes, whole blobs).
-    const bool gate = cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
+    const bool gate = size_gate_on();
     if (!gate && !image.known())
         return;
     if (image.known() && size_.image_height() != image.height)
@@ -363,7 +358,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     // A detector's boxes far off the height its people have where they
     // stand are ignored (size_gate; the pixels' candidates have their own
     // size test).
-    const bool gate = cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
+    const bool gate = size_gate_on();
     if (gate)
         size_gate_.age(dt);
     // The detector's scale of scores, learnt from the boxes that may start

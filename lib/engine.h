@@ -81,11 +81,11 @@ private:
                const ct_detection *dets, double min_iou);
     void update(Track &t, const ct_detection &d, int index, int64_t t_us);
     void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
-    // The score one of a tentative track's detections must reach before it
-    // is confirmed: with a detector's boxes confirm_score, or less where
-    // the detector's scores are lower (score_scale.h); none with the
-    // pixels' candidates.
-    float confirm_score() const;
+    // Whether a detector's boxes go through the size gate (size_gate).
+    bool size_gate_on() const
+    {
+        return cfg_.source == CT_SOURCE_DETECTIONS && cfg_.size_gate > 0;
+    }
     // Tracks no detection updated: lost, or removed when tentative, past
     // their lifetime or outside the image.
     void age_unmatched(int64_t t_us, ImageSize image);
@@ -125,7 +125,11 @@ private:
     PersonSize size_;
     SizeGate size_gate_; // a detector's people's height (size_gate)
     ScoreScale scores_;  // a detector's scale of scores (confirm_score)
-    float confirm_ = 0;  // this step's score that confirms a track
+    // The score one of a tentative track's detections must reach before it
+    // is confirmed, this step: with a detector's boxes confirm_score, or
+    // less where the detector's scores are lower (score_scale.h); 0 (none)
+    // with the pixels' candidates, for which it is never learnt.
+    float confirm_ = 0;
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;
