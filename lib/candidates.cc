@@ -18,8 +18,9 @@ constexpr double kGhostEdges = 2.0;
 Rect to_working(const Box &b)
 {
     const int s = Background::kScale;
-    return Rect{(int)std::floor(b.left / s), (int)std::floor(b.top / s),
-                (int)std::ceil((b.left + b.width) / s), (int)std::ceil((b.top + b.height) / s)};
+    return Rect{pixel_int(std::floor(b.left / s)), pixel_int(std::floor(b.top / s)),
+                pixel_int(std::ceil((b.left + b.width) / s)),
+                pixel_int(std::ceil((b.top + b.height) / s))};
 }
 
 } // namespace

@@ -12,6 +12,15 @@ struct Rect {
     int x0, y0, x1, y1;
 };
 
+// A pixel position as an int, clamped to +-2^29 first (NaN to the lower
+// end): a box far outside any frame (a track predicted far away, absurd
+// input) converts without overflow, holds no pixel, and the sum or the
+// difference of two such positions is still an int.
+inline int pixel_int(double v)
+{
+    return (int)(v > -536870912.0 ? (v < 536870912.0 ? v : 536870912.0) : -536870912.0);
+}
+
 // Whether pixel (x, y) of the mask (rows of `stride` bytes) is on the
 // outline of the foreground inside the box [x0, x1) x [y0, y1), which lies
 // within the mask: foreground, with a 4-neighbour that is background or

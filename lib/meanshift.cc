@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "mask.h"
+
 namespace ctrack {
 
 namespace {
@@ -33,13 +35,6 @@ constexpr std::array<uint16_t, 65536> kSqrt = make_sqrt_table();
 // Windows larger than this (half-sides, pixels) are cut to it: no frame is
 // near so large (16384 at most), and the arithmetic below stays in range.
 constexpr double kMaxHalfSide = 1 << 20;
-
-// A pixel position as an int, clamped to +-2^30 first: a window far outside
-// any frame converts without overflow (and then holds no pixel).
-inline int to_int(double v)
-{
-    return (int)std::max(-1073741824.0, std::min(1073741824.0, v));
-}
 
 inline int sample_step(double area, double target)
 {
@@ -109,8 +104,8 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
     hw = std::min(hw, kMaxHalfSide);
     hh = std::min(hh, kMaxHalfSide);
     const int s = sample_step(M_PI * hw * hh, kTargetSamples); // the ellipse's area
-    const int x0 = std::max(0, to_int(std::ceil(cx - hw))), x1 = std::min(img.width - 1, to_int(std::floor(cx + hw)));
-    const int y0 = std::max(0, to_int(std::ceil(cy - hh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + hh)));
+    const int x0 = std::max(0, pixel_int(std::ceil(cx - hw))), x1 = std::min(img.width - 1, pixel_int(std::floor(cx + hw)));
+    const int y0 = std::max(0, pixel_int(std::ceil(cy - hh))), y1 = std::min(img.height - 1, pixel_int(std::floor(cy + hh)));
     if (x1 < x0 || y1 < y0)
         return 0; // also when cx or cy is NaN
     // r^2 = dx^2 / hw^2 + dy^2 / hh^2 in Q12, as a column term (a table) plus
@@ -237,8 +232,8 @@ void MeanShift::background(const Planes &img, double cx, double cy, double w, do
     h = std::min(h, kMaxHalfSide);
     const double ow = w * g / 2, oh = h * g / 2, iw = w / 2, ih = h / 2;
     const int s = sample_step(w * h * (grow - 1), kTargetRingSamples);
-    const int x0 = std::max(0, to_int(std::ceil(cx - ow))), x1 = std::min(img.width - 1, to_int(std::floor(cx + ow)));
-    const int y0 = std::max(0, to_int(std::ceil(cy - oh))), y1 = std::min(img.height - 1, to_int(std::floor(cy + oh)));
+    const int x0 = std::max(0, pixel_int(std::ceil(cx - ow))), x1 = std::min(img.width - 1, pixel_int(std::floor(cx + ow)));
+    const int y0 = std::max(0, pixel_int(std::ceil(cy - oh))), y1 = std::min(img.height - 1, pixel_int(std::floor(cy + oh)));
     clear_hist();
     if (x1 < x0 || y1 < y0) {
         normalise(0, out);

@@ -533,6 +533,34 @@ static size_t drive_by(int verify, ct_candidate *cand, size_t *nc, ct_track *out
     return n;
 }
 
+/* A track confirmed from detections alone, moving at 100 px/s, then a
+ * frame with pixels 10^9 seconds later: its predicted box lies some 10^11
+ * pixels away when the pixels are read (verify_detections takes the
+ * tracks' boxes to the background model's scale, far past an int). The
+ * feed works, and the sanitizer build finds no overflow (the fuzzer once
+ * did). */
+START_TEST(a_track_predicted_far_away)
+{
+    ct_config cfg = test_config();
+    cfg.verify_detections = 1;
+    ct_tracker *t = test_tracker(&cfg);
+    static image im;
+    ct_track out[64];
+    for (int k = 0; k < 10; k++) { /* detections alone: nothing to verify them with */
+        ct_frame f = test_frame(k * SEC / 10, W, H);
+        ct_detection d = test_det(40 + 10.0f * k, 85, 30, 70, 0.97f);
+        ck_assert_int_eq(ct_tracker_feed(t, &f, &d, 1), CT_OK);
+    }
+    size_t n = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 64, sizeof *out, &n), CT_OK);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_float_gt(out[0].velocity_x, 50);
+    draw(&im, -1, 120);
+    step_pixels(t, &im, CT_FORMAT_I420, 1000000000 * SEC, NULL, 0, out);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 START_TEST(verify_detections_rejects_a_car)
 {
     ct_candidate cand[32];
@@ -822,6 +850,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, pixels_alone);
     tcase_add_test(tc, a_new_frame_size_starts_the_model_again);
     tcase_add_test(tc, verify_detections_rejects_a_car);
+    tcase_add_test(tc, a_track_predicted_far_away);
     tcase_add_test(tc, packed_colour_frames_track_as_their_planes);
     tcase_add_test(tc, person_size_learnt_from_walkers_at_two_depths);
     tcase_add_test(tc, size_test_scores_by_size_and_aspect);
