@@ -6,8 +6,9 @@
 //   dump-blobs VIDEO.y4m OUT
 //
 // OUT is a sequence of records, little-endian int32: frame (from 1), x0, y0,
-// width, height of the blob at the mask's scale, then width * height bytes of
-// the cleaned mask inside the box (0 or 255).
+// width, height of the blob at the mask's scale, and that scale (frame
+// pixels across a working pixel), then width * height bytes of the cleaned
+// mask inside the box (0 or 255).
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -58,10 +59,10 @@ int main(int argc, char **argv)
                     nullptr, 0);
         int w, h;
         const uint8_t *mask = engine.foreground(&w, &h);
-        const int s = ctrack::Background::kScale;
+        const int s = engine.foreground_scale();
         for (const ct_candidate &c : engine.candidates()) {
-            const int32_t head[5] = {k, (int32_t)(c.left / s), (int32_t)(c.top / s),
-                                     (int32_t)(c.width / s), (int32_t)(c.height / s)};
+            const int32_t head[6] = {k, (int32_t)(c.left / s), (int32_t)(c.top / s),
+                                     (int32_t)(c.width / s), (int32_t)(c.height / s), s};
             crop.resize((size_t)head[3] * head[4]);
             for (int y = 0; y < head[4]; y++)
                 std::memcpy(&crop[(size_t)y * head[3]], mask + (size_t)(head[2] + y) * w + head[1],

@@ -77,17 +77,19 @@ def candidates(build, seq):
 def blob_masks(build, seq, cands):
     """The masks of the candidates (eval/dump-blobs runs the same tracker
     and must find the same blobs): (frame, x0, y0, w, h, mask) in working
-    pixels, one per candidate row."""
+    pixels, one per candidate row, and the working scale of each."""
     path = os.path.join(build, "recognition-%s.blobs" % seq)
     subprocess.run([os.path.join(build, "eval", "dump-blobs"), video(seq), path], check=True)
     data = open(path, "rb").read()
-    out, i = [], 0
+    out, scales, i = [], [], 0
     while i < len(data):
-        f, x, y, w, h = (int(v) for v in np.frombuffer(data, "<i4", 5, i))
-        i += 20
+        f, x, y, w, h, s = (int(v) for v in np.frombuffer(data, "<i4", 6, i))
+        i += 24
         out.append((f, x, y, w, h, np.frombuffer(data, np.uint8, w * h, i).reshape(h, w)))
+        scales.append(s)
         i += w * h
-    boxes = np.array([[b[0], 2 * b[1], 2 * b[2], 2 * b[3], 2 * b[4]] for b in out])
+    boxes = np.array([[b[0], s * b[1], s * b[2], s * b[3], s * b[4]]
+                      for b, s in zip(out, scales)])
     if boxes.shape != (len(cands), 5) or not (boxes == cands[:, :5]).all():
         sys.exit("recognition: dump-blobs and ct-track found different blobs on %s" % seq)
     return out

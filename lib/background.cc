@@ -259,28 +259,46 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
     }
 }
 
-// The frame's samples at the working pixels: every kScale-th luma through
+// The frame's samples at the working pixels: every scale-th luma through
 // the exposure table (or as they are, lut null), and the chroma samples
-// when the plane interleaves them (NV12; I420's are read in place).
-CT_ALWAYS_INLINE void gather_row(const BgGather &g)
+// when they are not read in place (NV12's interleaved ones, and every
+// scale but 2). Scale 2, the usual one, has its own loops: a constant
+// stride vectorises.
+template <int S> CT_ALWAYS_INLINE void gather_luma(const BgGather &g, int s)
 {
     const uint8_t *__restrict src = g.src_y;
     uint8_t *__restrict iy = g.iy;
-    const int w = g.w;
+    const int w = g.w, step = S ? S : s;
     if (g.lut) {
         const uint8_t *__restrict lut = g.lut;
         for (int x = 0; x < w; x++)
-            iy[x] = lut[src[x * Background::kScale]];
+            iy[x] = lut[src[x * step]];
     } else {
         for (int x = 0; x < w; x++)
-            iy[x] = src[x * Background::kScale];
+            iy[x] = src[x * step];
     }
-    if (g.su && g.c_step == 2) {
-        const uint8_t *__restrict su = g.su, *__restrict sv = g.sv;
-        uint8_t *__restrict iu = g.iu, *__restrict iv = g.iv;
+}
+
+CT_ALWAYS_INLINE void gather_row(const BgGather &g)
+{
+    if (g.scale == 2)
+        gather_luma<2>(g, 2);
+    else
+        gather_luma<0>(g, g.scale);
+    if (!g.su || (g.c_step == 1 && !g.c_half))
+        return;
+    const uint8_t *__restrict su = g.su, *__restrict sv = g.sv;
+    uint8_t *__restrict iu = g.iu, *__restrict iv = g.iv;
+    const int w = g.w, c = g.c_step;
+    if (g.c_half) {
         for (int x = 0; x < w; x++) {
-            iu[x] = su[2 * x];
-            iv[x] = sv[2 * x];
+            iu[x] = su[(x >> 1) * c];
+            iv[x] = sv[(x >> 1) * c];
+        }
+    } else {
+        for (int x = 0; x < w; x++) {
+            iu[x] = su[x * c];
+            iv[x] = sv[x * c];
         }
     }
 }
@@ -458,13 +476,13 @@ double Background::exposure_ratio(const Planes &img, const Rect *frozen, int n_f
     // divide_small(n, 0) is 0).
     uint32_t hists[4][256] = {}, n = 0;
     for (int y = 0; y < h_; y += 4) {
-        const uint8_t *src = img.y + (size_t)(y * kScale) * img.y_stride;
+        const uint8_t *src = img.y + (size_t)(y * scale_) * img.y_stride;
         const uint8_t *m = old_my_.data() + (size_t)y * w_;
         const uint8_t *f = frozen_row(frozen, n_frozen, y);
         for (int x = 0, k = 0; x < w_; x += 4, k++) {
             const uint32_t mx = m[x];
             const uint32_t use = (f[x] == 0) & (mx >= (uint32_t)kMinRatioLuma);
-            const uint32_t q = divide_small(kRatioOne * src[x * kScale] + mx / 2, mx);
+            const uint32_t q = divide_small(kRatioOne * src[x * scale_] + mx / 2, mx);
             hists[k & 3][std::min<uint32_t>(255, q)] += use;
             n += use;
         }
@@ -508,6 +526,13 @@ void Background::rollback()
     swap_models();
     w_ = old_dims_.w;
     h_ = old_dims_.h;
+    // A step that took the model finer failed (its buffers did not fit the
+    // host's heap): the model stays at the scale it had from now on.
+    if (old_dims_.frames > 0 && old_dims_.fw == fw_ && old_dims_.fh == fh_ &&
+        old_dims_.scale > scale_)
+        finest_ = old_dims_.scale;
+    scale_ = old_dims_.scale;
+    release_resampled();
     fw_ = old_dims_.fw;
     fh_ = old_dims_.fh;
     color_ = old_dims_.color;
@@ -519,53 +544,139 @@ void Background::rollback()
     kept_ = false;
 }
 
-// Sizes the model for the image. The update that follows starts it from
-// the image itself: M and the chroma take its samples, V starts at kVMax.
-void Background::start(const Planes &img)
+void Background::release_resampled()
+{
+    for (Vec<uint8_t> *v : {&rs_my_, &rs_vy_, &rs_mu_, &rs_mv_})
+        Vec<uint8_t>(v->get_allocator()).swap(*v);
+}
+
+void Background::size_for(const Planes &img)
 {
     fw_ = img.width;
     fh_ = img.height;
     color_ = img.color;
-    w_ = (img.width + kScale - 1) / kScale;
-    h_ = (img.height + kScale - 1) / kScale;
+    w_ = (img.width + scale_ - 1) / scale_;
+    h_ = (img.height + scale_ - 1) / scale_;
     const size_t n = (size_t)w_ * h_;
     my_.resize(n);
     vy_.resize(n);
-    mu_.assign(n, 128); // grey frames: no colour, and the loop leaves them
-    mv_.assign(n, 128);
+    mu_.resize(n);
+    mv_.resize(n); // grey frames leave the chroma alone: nothing reads it
     mask_.assign(n, 0);
     frozen_line_.assign(2 * (size_t)w_, 0);
     line_vmax_.assign(w_, kVMax);
+}
+
+// Sizes the model for the image. The update that follows starts it from
+// the image itself: M and the chroma take its samples, V starts at kVMax.
+void Background::start(const Planes &img)
+{
+    size_for(img);
+    mu_.assign(mu_.size(), 128); // grey frames: no colour, and the loop leaves them
+    mv_.assign(mv_.size(), 128);
     frames_ = 0;
     noise_ = NoiseLevel();
 }
 
-void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int n_frozen)
+void Background::resample(const Planes &img)
+{
+    const int so = old_dims_.scale, wo = old_dims_.w, ho = old_dims_.h;
+    const size_t n = (size_t)w_ * h_;
+    rs_my_.resize(n);
+    rs_vy_.resize(n);
+    rs_mu_.resize(n);
+    rs_mv_.resize(n);
+    const uint8_t *lut = gain_lut_;
+    for (int y = 0; y < h_; y++) {
+        const int fy = y * scale_;
+        const int oy0 = std::min(fy / so, ho - 1), oy1 = std::min((fy + so - 1) / so, ho - 1);
+        for (int x = 0; x < w_; x++) {
+            const int fx = x * scale_;
+            const int ox0 = std::min(fx / so, wo - 1), ox1 = std::min((fx + so - 1) / so, wo - 1);
+            const size_t i = (size_t)y * w_ + x;
+            const int I = lut[img.y[(size_t)fy * img.y_stride + fx]];
+            int U = 128, V = 128;
+            if (color_) {
+                const size_t cy = (size_t)(fy >> 1), cx = (size_t)(fx >> 1);
+                U = img.u[cy * img.u_stride + cx * img.c_step];
+                V = img.v[cy * img.v_stride + cx * img.c_step];
+            }
+            if (fx > (wo - 1) * so || fy > (ho - 1) * so) {
+                // Past the old model's last row or column (the image's last
+                // few pixels, which it never sampled): started from the
+                // frame, as the model starts.
+                rs_my_[i] = (uint8_t)I;
+                rs_vy_[i] = kVMax;
+                rs_mu_[i] = (uint8_t)U;
+                rs_mv_[i] = (uint8_t)V;
+                continue;
+            }
+            // Of the old pixels around (up to four), the one whose model is
+            // closest to the frame here: in luma for M and V, and apart in
+            // chroma (4:2:0's chroma lies across the luma's edges).
+            size_t best = (size_t)oy0 * wo + ox0, best_c = best;
+            int best_d = 256, best_dc = 512;
+            for (int oy = oy0; oy <= oy1; oy++)
+                for (int ox = ox0; ox <= ox1; ox++) {
+                    const size_t o = (size_t)oy * wo + ox;
+                    const int d = std::abs(I - (int)old_my_[o]);
+                    if (d < best_d) {
+                        best_d = d;
+                        best = o;
+                    }
+                    const int dc = std::abs(U - (int)old_mu_[o]) + std::abs(V - (int)old_mv_[o]);
+                    if (dc < best_dc) {
+                        best_dc = dc;
+                        best_c = o;
+                    }
+                }
+            rs_my_[i] = old_my_[best];
+            rs_vy_[i] = old_vy_[best];
+            rs_mu_[i] = old_mu_[best_c];
+            rs_mv_[i] = old_mv_[best_c];
+        }
+    }
+}
+
+void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *frozen,
+                       int n_frozen)
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
-    old_dims_ = Dims{w_, h_, fw_, fh_, color_, frames_, start_us_, last_us_, noise_, gain_};
+    old_dims_ =
+        Dims{w_, h_, fw_, fh_, scale_, color_, frames_, start_us_, last_us_, noise_, gain_};
     swap_models();
     kept_ = true;
+    scale = std::min(std::max(scale, finest_), kMaxScale);
     const bool restart =
         frames_ == 0 || img.width != fw_ || img.height != fh_ || img.color != color_;
-    if (restart) {
-        start(img);
-    } else {
+    const bool rescale = !restart && scale != scale_;
+    if (!restart) {
         const size_t n = (size_t)w_ * h_;
         my_.resize(n);
         vy_.resize(n);
         mu_.resize(n);
         mv_.resize(n); // grey frames leave the chroma alone: nothing reads it
-        // A restart at another size that failed and was rolled back left
-        // these at that size.
+        // A restart at another size (or scale) that failed and was rolled
+        // back left these at that size.
         mask_.resize(n);
         if (frozen_line_.size() != 2 * (size_t)w_)
             frozen_line_.assign(2 * (size_t)w_, 0);
     }
+    // The exposure against the model as it is (at its old scale, where the
+    // frozen boxes, at the new one, do not apply).
+    set_gain(restart ? 1.0 : exposure_ratio(img, rescale ? nullptr : frozen,
+                                            rescale ? 0 : n_frozen));
+    if (restart) {
+        scale_ = scale;
+        start(img);
+    } else if (rescale) {
+        scale_ = scale;
+        size_for(img);
+        resample(img);
+    }
     if (restart)
         start_us_ = last_us_ = t_us;
-    set_gain(restart ? 1.0 : exposure_ratio(img, frozen, n_frozen));
     const bool warm = elapsed_us(t_us, start_us_) < (uint64_t)kWarmupUs;
     const int step =
         warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : elapsed_us(t_us, last_us_)) : 1;
@@ -583,7 +694,7 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     const bool sample = !restart;
     if (sample)
         noise_samples_.begin();
-    const int cs = kScale / 2; // working pixel to chroma sample
+    const int sc = scale_;
     const bool color = color_;
     const int w = w_, h = h_;
     // Each row's samples are gathered first into contiguous buffers (I420's
@@ -596,19 +707,22 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     const bool identity = gain_ == 1.0;
     for (int y = 0; y < h; y++) {
         BgGather g;
-        g.src_y = img.y + (size_t)(y * kScale) * img.y_stride;
+        g.src_y = img.y + (size_t)(y * sc) * img.y_stride;
         g.lut = identity ? nullptr : gain_lut_;
         g.w = w;
+        g.scale = sc;
         g.iy = line_y_.data();
         g.iu = line_u_.data();
         g.iv = line_v_.data();
         g.su = g.sv = nullptr;
-        g.c_step = (int)img.c_step * cs;
+        // The 4:2:0 chroma sample under working pixel x: x * scale / 2.
+        g.c_half = sc == 1;
+        g.c_step = (int)img.c_step * (sc == 1 ? 1 : sc / 2);
         const uint8_t *iu = g.iu, *iv = g.iv;
         if (color) {
-            g.su = img.u + (size_t)(y * cs) * img.u_stride;
-            g.sv = img.v + (size_t)(y * cs) * img.v_stride;
-            if (g.c_step == 1) { // I420: read in place; NV12 (2) is gathered
+            g.su = img.u + (size_t)((y * sc) >> 1) * img.u_stride;
+            g.sv = img.v + (size_t)((y * sc) >> 1) * img.v_stride;
+            if (g.c_step == 1 && !g.c_half) { // I420 at scale 2: read in place
                 iu = g.su;
                 iv = g.sv;
             }
@@ -618,13 +732,13 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
         const uint8_t *iy = line_y_.data();
         const uint8_t *frozen_y = frozen_row(frozen, n_frozen, y);
         // The model before this frame: the old buffers, or on a (re)start
-        // the image's own samples (and V at kVMax). Never the buffers
-        // written.
+        // the image's own samples (and V at kVMax), or at a new scale the
+        // old model resampled. Never the buffers written.
         BgRow r;
-        r.om = restart ? iy : old_my_.data() + row;
-        r.ov = restart ? line_vmax_.data() : old_vy_.data() + row;
-        r.ou = restart ? iu : old_mu_.data() + row;
-        r.ow = restart ? iv : old_mv_.data() + row;
+        r.om = restart ? iy : (rescale ? rs_my_ : old_my_).data() + row;
+        r.ov = restart ? line_vmax_.data() : (rescale ? rs_vy_ : old_vy_).data() + row;
+        r.ou = restart ? iu : (rescale ? rs_mu_ : old_mu_).data() + row;
+        r.ow = restart ? iv : (rescale ? rs_mv_ : old_mv_).data() + row;
         // The noise's rows: the update leaves the image's differences from
         // the model before it in line_dy_ and line_dc_.
         const bool noise_row = sample && y % 4 == 0;
@@ -654,17 +768,19 @@ void Background::apply(int64_t t_us, const Planes &img, const Rect *frozen, int 
     if (sample)
         noise_.end(noise_samples_, restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
+    if (rescale)
+        release_resampled();
 }
 
 namespace {
 
-// Luma at working pixel (x, y), clamped to the image, through the exposure
-// table lut.
-inline int luma_at(const Planes &img, const uint8_t *lut, int w, int h, int x, int y)
+// Luma at working pixel (x, y) of a model at scale s, clamped to the
+// image, through the exposure table lut.
+inline int luma_at(const Planes &img, const uint8_t *lut, int s, int w, int h, int x, int y)
 {
     x = std::min(std::max(x, 0), w - 1);
     y = std::min(std::max(y, 0), h - 1);
-    return lut[img.y[(size_t)(y * Background::kScale) * img.y_stride + x * Background::kScale]];
+    return lut[img.y[(size_t)(y * s) * img.y_stride + (size_t)x * s]];
 }
 
 } // namespace
@@ -673,7 +789,7 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
                                long *frame, long *model) const
 {
     *frame = *model = 0;
-    const int w = w_, h = h_;
+    const int w = w_, h = h_, s = scale_;
     const int x0 = std::max(r.x0, 0), y0 = std::max(r.y0, 0);
     const int x1 = std::min(r.x1, w), y1 = std::min(r.y1, h);
     auto m = [&](int x, int y) {
@@ -683,24 +799,25 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
     };
     const uint8_t *g = gain_lut_;
     for_each_outline(blob, (size_t)w, x0, y0, x1, y1, [&](int x, int y) {
-        *frame += std::abs(luma_at(img, g, w, h, x + 1, y) - luma_at(img, g, w, h, x - 1, y)) +
-                  std::abs(luma_at(img, g, w, h, x, y + 1) - luma_at(img, g, w, h, x, y - 1));
+        *frame += std::abs(luma_at(img, g, s, w, h, x + 1, y) - luma_at(img, g, s, w, h, x - 1, y)) +
+                  std::abs(luma_at(img, g, s, w, h, x, y + 1) - luma_at(img, g, s, w, h, x, y - 1));
         *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
     });
 }
 
 void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)
 {
-    const int cs = kScale / 2;
+    const int s = scale_;
     for (int y = std::max(r.y0, 0); y < std::min(r.y1, h_); y++)
         for (int x = std::max(r.x0, 0); x < std::min(r.x1, w_); x++) {
             const size_t i = (size_t)y * w_ + x;
             if (!blob[i])
                 continue;
-            my_[i] = (uint8_t)luma_at(img, gain_lut_, w_, h_, x, y);
+            my_[i] = (uint8_t)luma_at(img, gain_lut_, s, w_, h_, x, y);
             if (color_) {
-                mu_[i] = img.u[(size_t)(y * cs) * img.u_stride + (size_t)(x * cs) * img.c_step];
-                mv_[i] = img.v[(size_t)(y * cs) * img.v_stride + (size_t)(x * cs) * img.c_step];
+                const size_t cy = (size_t)((y * s) >> 1), cx = (size_t)((x * s) >> 1);
+                mu_[i] = img.u[cy * img.u_stride + cx * img.c_step];
+                mv_[i] = img.v[cy * img.v_stride + cx * img.c_step];
             }
             mask_[i] = 0;
         }

@@ -1,9 +1,11 @@
 // The background model for tracking from the pixels alone: Sigma-Delta
-// estimation (Manzanera and Richefeu 2004) in integers on the frame at half
-// resolution, with selective update and chroma shadow suppression.
+// estimation (Manzanera and Richefeu 2004) in integers on the frame at a
+// working scale (half resolution, or full or a quarter for small or large
+// people), with selective update and chroma shadow suppression.
 #ifndef CTRACK_BACKGROUND_H
 #define CTRACK_BACKGROUND_H
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -57,16 +59,36 @@ private:
 class Background {
 public:
     Background() : dsp_(make_dsp()) { set_gain(1.0); }
-    // One working pixel for 2 x 2 frame pixels (the chroma grid of 4:2:0).
-    static constexpr int kScale = 2;
+    // The working scale: one working pixel for scale x scale frame pixels,
+    // 1, 2 or 4. The model starts at kStartScale (the chroma grid of 4:2:0);
+    // the host of the model chooses another from the people's size.
+    static constexpr int kStartScale = 2;
+    static constexpr int kMinScale = 1, kMaxScale = 4;
+    int scale() const { return scale_; }
+    // The finest scale the model may take: kMinScale, or the scale it had
+    // when a step that took it finer was rolled back (out of memory: a
+    // fixed heap keeps the scale it holds rather than fail every frame).
+    int finest_scale() const { return finest_; }
 
     // Updates the model with the frame and computes the foreground mask
     // (255 foreground, 0 background, working size). Pixels inside `frozen`
-    // (working coordinates: the boxes of confirmed tracks) are not learnt,
-    // so a person who stops stays foreground. A frame of another size
-    // restarts the model.
-    void apply(int64_t t_us, const Planes &img, const Rect *frozen, int n_frozen);
-    void reset() { frames_ = 0; }
+    // (working coordinates at `scale`: the boxes of confirmed tracks) are
+    // not learnt, so a person who stops stays foreground. A frame of another
+    // size restarts the model, at `scale`. Another scale than the model's
+    // resamples it: each new working pixel takes M and V of the old pixel
+    // around it (of up to four) whose M is closest to the frame there, and
+    // the chroma of the one closest in chroma, so that the background's
+    // edges stay sharp and a person on them stays foreground; `scale` is
+    // taken no finer than finest_scale().
+    void apply(int64_t t_us, const Planes &img, int scale, const Rect *frozen, int n_frozen);
+    // The model starts again with the next frame, at kStartScale.
+    void reset()
+    {
+        frames_ = 0;
+        scale_ = std::max(kStartScale, finest_);
+    }
+    // Whether a frame was learnt since the start or the last reset.
+    bool started() const { return frames_ > 0; }
     // The model as it was before the last apply() (and absorb()) is kept
     // until commit(): rollback() returns to it, so that a step that fails
     // after the update leaves the model untouched. Both are O(1) and never
@@ -92,6 +114,12 @@ public:
 
 private:
     void start(const Planes &img);
+    // Sizes the buffers for the image at scale_.
+    void size_for(const Planes &img);
+    // The model before this frame at scale_, from the old buffers at the old
+    // dimensions (old_dims_), into rs_*.
+    void resample(const Planes &img);
+    void release_resampled();
     // The frame's exposure against the model's: the median ratio of image to
     // model luma over a grid of pixels no track stands on (1 within a
     // deadband). A global step of light (auto-exposure, a cloud, a lamp)
@@ -107,7 +135,7 @@ private:
 
     static Dsp make_dsp();
     Dsp dsp_; // the row kernels for this CPU, chosen when the tracker is made
-    int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0;
+    int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0, scale_ = kStartScale, finest_ = kMinScale;
     bool color_ = false;
     int frames_ = 0;
     NoiseLevel noise_;
@@ -124,7 +152,7 @@ private:
     // The model before the last apply(), while kept_: apply() reads it and
     // writes the new one into the buffers above (double buffering: no copy).
     struct Dims {
-        int w, h, fw, fh;
+        int w, h, fw, fh, scale;
         bool color;
         int frames;
         int64_t start_us, last_us;
@@ -132,6 +160,9 @@ private:
         double gain;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    // The old model resampled to a new scale, for the one update that
+    // changes it (released after).
+    Vec<uint8_t> rs_my_, rs_vy_, rs_mu_, rs_mv_;
     bool kept_ = false;
     Vec<uint8_t> mask_;
     Vec<uint8_t> frozen_line_; // a row of zeros, then a row for frozen_row()

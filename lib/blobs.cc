@@ -1,6 +1,5 @@
 #include "blobs.h"
 
-#include "background.h"
 #include "regions.h"
 
 #include <algorithm>
@@ -12,17 +11,14 @@ namespace ctrack {
 
 namespace {
 
-// A working pixel is this many frame pixels across.
-constexpr int kScale = Background::kScale;
-
 // A blob is kept when it covers at least this part of the box of a person
 // standing where its feet are, and is at least this part of their height
 // (the person's size from PersonSize)...
 constexpr double kMinAreaFraction = 0.12, kMinHeightFraction = 0.4;
-// ...and while the model knows nothing, when it covers this many working
+// ...and while the model knows nothing, when it covers this many frame
 // pixels and rows: a person of about 40 frame pixels, which the prior's
 // smallest (30) approaches.
-constexpr int kPriorMinArea = 100, kPriorMinRows = 10;
+constexpr int kPriorMinArea = 400, kPriorMinRows = 20;
 // Fragments merge only while their union is at most this many person
 // heights tall (where the size is known): two people one behind the other
 // are no person.
@@ -259,9 +255,10 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
     return -1;
 }
 
-void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-                      const PersonSize &size, Classifier &cls, Vec<Rect> &out)
+void BlobFinder::find(const uint8_t *mask, int w, int h, int scale, const Rect *predicted,
+                      int n_predicted, const PersonSize &size, Classifier &cls, Vec<Rect> &out)
 {
+    const int s = scale; // frame pixels across a working pixel
     Impl &m = *impl_;
     out.clear();
     whole_.clear();
@@ -322,7 +319,7 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
                 if (u.y1 - u.y0 < kPersonAspect * 0.75 * (u.x1 - u.x0))
                     continue;
                 if (size.known() &&
-                    (u.y1 - u.y0) * kScale > kMaxUnionHeight * size.height_at(u.y1 * kScale))
+                    (u.y1 - u.y0) * s > kMaxUnionHeight * size.height_at(u.y1 * s))
                     continue;
                 // Close fragments merge; farther ones only when the union
                 // looks more like a person than either part does.
@@ -349,18 +346,18 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, const Rect *predicted, 
         // where the blob's feet are (working pixels; while the size model
         // knows nothing, under the prior's smallest person).
         if (size.known()) {
-            const double person_h = size.height_at(r.y1 * kScale) / kScale;
-            const double person_w = size.width_at(r.y1 * kScale) / kScale;
+            const double person_h = size.height_at(r.y1 * s) / s;
+            const double person_w = size.width_at(r.y1 * s) / s;
             if (area < kMinAreaFraction * person_h * person_w ||
                 bh < kMinHeightFraction * person_h)
                 continue;
-        } else if (area < kPriorMinArea || bh < kPriorMinRows) {
+        } else if (area * s * s < kPriorMinArea || bh * s < kPriorMinRows) {
             continue;
         }
         // A group: wider than one person of this height (of the size
         // model's width where it knows it).
         const double person_w =
-            size.known() ? size.width_at(r.y1 * kScale) / kScale : bh / kPersonAspect;
+            size.known() ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
         const int parts = (int)std::lround(bw / person_w);
         // The predicted centres of the tracks inside, those closer than
         // kMinCentreGap heights to the one before counted once.

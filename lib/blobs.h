@@ -29,10 +29,10 @@ public:
     // split, at the predicted boxes' centres when tracks are there, else
     // into equal parts at the valleys of the column profile. What counts as
     // a speck, a person's height and a person's width come from `size`
-    // (frame pixels, at the background model's scale from the mask); `cls`
-    // votes where a merge or a split is in doubt.
-    void find(const uint8_t *mask, int w, int h, const Rect *predicted, int n_predicted,
-              const PersonSize &size, Classifier &cls, Vec<Rect> &out);
+    // (frame pixels; a working pixel of the mask is `scale` frame pixels
+    // across); `cls` votes where a merge or a split is in doubt.
+    void find(const uint8_t *mask, int w, int h, int scale, const Rect *predicted,
+              int n_predicted, const PersonSize &size, Classifier &cls, Vec<Rect> &out);
     // The last find()'s cuts: blobs past the cap (the smallest), and whether
     // the mask was so full of foreground that it gave none.
     int dropped() const { return dropped_; }

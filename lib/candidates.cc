@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "clock.h"
+#include "tunable.h"
 
 namespace ctrack {
 
@@ -15,9 +16,34 @@ namespace {
 // is measured in docs/notes/pixels.md.
 constexpr double kGhostEdges = 2.0;
 
-Rect to_working(const Box &b)
+// The working scale from the people's size (docs/notes/pixels.md, "The
+// working scale"): the coarsest of 1, 2 and 4 at which a typical person
+// keeps kPersonRows working rows. Going coarser needs kScaleMargin times
+// that, going finer less than it over kScaleMargin, so that a size near a
+// bound does not swing the model between two scales. Finer is taken as
+// soon as the size is known (people are being missed); coarser, which
+// only saves time, once kCoarserSamples boxes are behind the size (each
+// change perturbs the tracks for a moment).
+CT_TUNABLE(kPersonRows, "CTRACK_PERSON_ROWS", 33);
+CT_TUNABLE(kScaleMargin, "CTRACK_SCALE_MARGIN", 1.2);
+CT_TUNABLE(kCoarserSamples, "CTRACK_COARSER_SAMPLES", 200);
+
+int working_scale(const PersonSize &size, int current, int finest)
 {
-    const int s = Background::kScale;
+    if (!size.known())
+        return std::max(Background::kStartScale, finest);
+    const double h = size.typical_height();
+    int s = current;
+    if ((double)size.samples() >= kCoarserSamples)
+        while (s < Background::kMaxScale && h / (2 * s) >= kPersonRows * kScaleMargin)
+            s *= 2;
+    while (s > finest && h / s < kPersonRows / kScaleMargin)
+        s /= 2;
+    return s;
+}
+
+Rect to_working(const Box &b, int s)
+{
     return Rect{pixel_int(std::floor(b.left / s)), pixel_int(std::floor(b.top / s)),
                 pixel_int(std::ceil((b.left + b.width) / s)),
                 pixel_int(std::ceil((b.top + b.height) / s))};
@@ -45,14 +71,17 @@ size_t PixelCandidates::memory_bytes() const
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
-                                        const Vec<Track> &tracks)
+                                        const Vec<Track> &tracks, const PersonSize &size,
+                                        int finest)
 {
+    const int s =
+        working_scale(size, background_.scale(), std::max(finest, background_.finest_scale()));
     frozen_.clear();
     predicted_.clear();
     for (const Track &t : tracks) {
         if (t.state == CT_TRACK_TENTATIVE)
             continue;
-        predicted_.push_back(to_working(t.box()));
+        predicted_.push_back(to_working(t.box(), s));
         // Where a confirmed track stands, the background learns nothing: a
         // person who stops stays foreground. Only tracks that have moved:
         // a track that never did may stand on a ghost of the model, which
@@ -60,7 +89,7 @@ void PixelCandidates::update_background(int64_t t_us, const Planes &img,
         if (t.state == CT_TRACK_CONFIRMED && t.moved)
             frozen_.push_back(predicted_.back());
     }
-    background_.apply(t_us, img, frozen_.data(), (int)frozen_.size());
+    background_.apply(t_us, img, s, frozen_.data(), (int)frozen_.size());
 }
 
 // CT_PEDESTRIAN_SIZE: the box's aspect and height against the people's
@@ -84,17 +113,22 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     if (img.empty())
         return;
     Stopwatch sw;
-    update_background(t_us, img, tracks);
+    // The finer scales are for the contour template, which needs a
+    // person's rows; size and aspect alone need none, and would only meet
+    // more fragments (docs/notes/pixels.md, "The working scale").
+    update_background(t_us, img, tracks, size,
+                      test == CT_PEDESTRIAN_SIZE ? Background::kStartScale
+                                                 : Background::kMinScale);
     stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
-    blobs_.find(background_.mask(), background_.width(), background_.height(), predicted_.data(),
-                (int)predicted_.size(), size, classifier_, blob_rects_);
+    const int s = background_.scale();
+    blobs_.find(background_.mask(), background_.width(), background_.height(), s,
+                predicted_.data(), (int)predicted_.size(), size, classifier_, blob_rects_);
     have_mask_ = true;
     blobs_dropped += (uint64_t)blobs_.dropped();
     masks_flooded += blobs_.flooded();
     stage_ns[CT_STAGE_BLOBS] += sw.lap();
     candidates_.clear();
     whole_.clear();
-    const int s = Background::kScale;
     for (size_t i = 0; i < blob_rects_.size(); i++) {
         const Rect &r = blob_rects_[i];
         // A ghost is learnt at once and is no candidate.
@@ -117,10 +151,11 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
 }
 
 void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
-                             const ct_detection *dets, size_t n, uint64_t *stage_ns)
+                             const ct_detection *dets, size_t n, const PersonSize &size,
+                             uint64_t *stage_ns)
 {
     Stopwatch sw;
-    update_background(t_us, img, tracks);
+    update_background(t_us, img, tracks, size, Background::kMinScale);
     stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     classifier_.new_mask();
     blobs_.clean(background_.mask(), background_.width(), background_.height());
@@ -132,7 +167,8 @@ void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &
         const ct_detection &d = dets[j];
         const ct_candidate c = classifier_.candidate(
             blobs_.cleaned(), background_.width(), background_.height(),
-            to_working(Box{d.left, d.top, d.width, d.height}), d.left, d.top, d.width, d.height);
+            to_working(Box{d.left, d.top, d.width, d.height}, background_.scale()), d.left, d.top,
+            d.width, d.height);
         candidates_.push_back(c);
         ct_detection v = d;
         if (rejects(c))
@@ -155,8 +191,8 @@ void PixelCandidates::barycenter(const Box &b, float *x, float *y) const
     *y = (float)(b.top + b.height / 2);
     if (!have_mask_)
         return;
-    const int s = Background::kScale, w = background_.width(), h = background_.height();
-    const Rect r = to_working(b);
+    const int s = background_.scale(), w = background_.width(), h = background_.height();
+    const Rect r = to_working(b, s);
     const uint8_t *m = blobs_.cleaned();
     long sx = 0, sy = 0, n = 0;
     for (int yy = std::max(0, r.y0); yy < std::min(h, r.y1); yy++)

@@ -34,7 +34,8 @@ public:
     // candidate each, in order, and dets() the detections with the score of
     // those the vote rejects multiplied by the vote's.
     void verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
-                const ct_detection *dets, size_t n, uint64_t *stage_ns);
+                const ct_detection *dets, size_t n, const PersonSize &size,
+                uint64_t *stage_ns);
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part
@@ -45,8 +46,13 @@ public:
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale
-    // (Background::kScale), or null when the step had no pixels.
+    // (scale()), or null when the step had no pixels.
     const uint8_t *foreground(int *w, int *h) const;
+    // Frame pixels across a working pixel of the mask: 1, 2 or 4, chosen
+    // from the people's size.
+    int scale() const { return background_.scale(); }
+    // Whether the background model has learnt a frame (since a reset).
+    bool started() const { return background_.started(); }
 
     // The background model starts again with the next frame.
     void reset();
@@ -60,7 +66,9 @@ public:
 
 private:
     // The background model over this frame (tracks that moved are frozen).
-    void update_background(int64_t t_us, const Planes &img, const Vec<Track> &tracks);
+    // The working scale from the people's size, no finer than `finest`.
+    void update_background(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                           const PersonSize &size, int finest);
 
     Background background_;
     BlobFinder blobs_;

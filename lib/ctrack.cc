@@ -331,7 +331,8 @@ static int check_out(const ct_tracker *tracker, const void *out, size_t size, si
 int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
 {
     const size_t size = out ? out->size : 0;
-    if (const int st = check_out(tracker, out, size, sizeof(ct_person_size),
+    // ct_person_size ended with samples before typical_height was added.
+    if (const int st = check_out(tracker, out, size, offsetof(ct_person_size, typical_height),
                                  sizeof(ct_person_size), "out", "ct_person_size"))
         return st;
     const ctrack::PersonSize &p = tracker->engine.person_size();
@@ -342,8 +343,10 @@ int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out)
         s.height_slope = (float)p.slope();
         s.height_intercept = (float)p.intercept();
         s.width_ratio = (float)p.aspect();
+        s.typical_height = (float)p.typical_height();
     }
     s.samples = p.samples();
+    s.working_scale = tracker->engine.working_scale();
     ctrack::write_sized(out, size, s);
     return CT_OK;
 }

@@ -34,13 +34,17 @@ struct BgRow {
     int step, vmin, chroma_fg, shadow_chroma;
 };
 
-// Gathering one row's samples: luma every other pixel of src_y, through
-// lut unless it is null, into iy; chroma interleaved (c_step 2: NV12) from
-// su and sv into iu and iv when su is not null.
+// Gathering one row's samples: luma every `scale`-th pixel of src_y (1, 2
+// or 4), through lut unless it is null, into iy; when su is not null, the
+// chroma sample of each working pixel from su and sv into iu and iv: sample
+// x * c_step, or (x >> 1) * c_step when c_half (scale 1: two working pixels
+// share one 4:2:0 sample). I420 at scale 2 (c_step 1) is read in place and
+// never gathered.
 struct BgGather {
     const uint8_t *src_y, *lut, *su, *sv;
     uint8_t *iy, *iu, *iv;
-    int w, c_step;
+    int w, c_step, scale = 2;
+    bool c_half = false;
 };
 
 struct Dsp {

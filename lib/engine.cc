@@ -339,7 +339,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         n = pixels_.dets().size();
         sw.lap();
     } else if (cfg_.verify_detections && !img.empty()) {
-        pixels_.verify(t_us, img, tracks_, dets, n, stage_ns_);
+        pixels_.verify(t_us, img, tracks_, dets, n, size_, stage_ns_);
         dets = pixels_.dets().data();
         sw.lap();
     }

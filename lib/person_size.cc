@@ -112,6 +112,7 @@ void PersonSize::learn()
     // bottom: no flat ground seen from above): a constant height.
     slope_ = bands >= 2 && vy > 0 ? std::max(0.0, (syh / sw - my * mh) / vy) : 0.0;
     intercept_ = mh - slope_ * my;
+    typical_ = std::min(kPriorMaxHeight, std::max(kLowest, mh));
     aspect_ = quantile_of(aspect_hist_, kBins, aspect_count_, kWidthQuantile, kLowestAspect,
                           kAspectStep);
     known_ = true;

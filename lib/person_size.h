@@ -31,6 +31,10 @@ public:
     // unknown.
     double height_at(double y) const;
     double width_at(double y) const { return aspect_ * height_at(y); }
+    // A typical person's height where people are seen (frame pixels): the
+    // line's height at the mean feet row of what was observed (the bands
+    // weighed as in the fit); 0 while unknown.
+    double typical_height() const { return known_ ? typical_ : 0; }
     // The smallest and largest height the model allows anywhere a person's
     // feet may be (the prior's bounds while unknown).
     double min_height() const;
@@ -56,7 +60,7 @@ private:
     int image_height_ = 0;
     uint64_t samples_ = 0;
     bool known_ = false;
-    double slope_ = 0, intercept_ = 0, aspect_ = 0.4;
+    double slope_ = 0, intercept_ = 0, aspect_ = 0.4, typical_ = 0;
 };
 
 } // namespace ctrack

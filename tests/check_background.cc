@@ -58,8 +58,8 @@ int64_t at(int k, double fps = 25)
 int foreground_in(const Background &bg, int x0, int y0, int x1, int y1)
 {
     int n = 0;
-    for (int r = y0 / Background::kScale; r < y1 / Background::kScale; r++)
-        for (int c = x0 / Background::kScale; c < x1 / Background::kScale; c++)
+    for (int r = y0 / Background::kStartScale; r < y1 / Background::kStartScale; r++)
+        for (int c = x0 / Background::kStartScale; c < x1 / Background::kStartScale; c++)
             n += bg.mask()[r * bg.width() + c] != 0;
     return n;
 }
@@ -75,10 +75,10 @@ START_TEST(moving_square_is_foreground)
     for (int k = 0; k < 60; k++) {
         g.fill(100);
         g.square(10 + 2 * k, 40, 20, 200);
-        bg.apply(at(k), g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
     }
     const int x = 10 + 2 * 59;
-    const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+    const int cells = (20 / Background::kStartScale) * (20 / Background::kStartScale);
     ck_assert_int_ge(foreground_in(bg, x, 40, x + 20, 60), cells * 9 / 10);
     ck_assert_int_eq(foreground_in(bg, 0, 0, W, 30), 0);
 }
@@ -113,7 +113,7 @@ START_TEST(every_column_is_modelled)
             for (int r = 10; r < 30; r++)
                 for (int c = x0; c < x0 + 12; c++)
                     y[r * w + c] = 220;
-            bg.apply(at(k), p, nullptr, 0);
+            bg.apply(at(k), p, Background::kStartScale, nullptr, 0);
         }
         ck_assert_int_eq(bg.width(), 83);
         for (int c = (w - 12) / 2; c < 83; c++) {
@@ -122,6 +122,102 @@ START_TEST(every_column_is_modelled)
                 n += bg.mask()[r * 83 + c] != 0;
             ck_assert_msg(n == 10, "column %d (colour %d): %d of 10 rows foreground", c, colour, n);
             ck_assert_int_eq(bg.mask()[2 * 83 + c], 0);
+        }
+    }
+}
+END_TEST
+
+// A new working scale (0.9.0) keeps what the model learnt: a still scene of
+// squares 5 pixels wide whose edges fall on odd columns and rows (which a
+// model at scale 2 never sampled), in luma and in colour (I420 and NV12),
+// is learnt at scale 2; taken to scale 1, then 4, then 2, the model shows
+// no foreground on the still scene, and a person who arrives with the
+// change is foreground wherever they stand. Resampling each new pixel from
+// the old one above and to its left (the nearest by truncation) would put
+// half the squares' edges in the foreground: the test checks that too.
+START_TEST(a_new_scale_keeps_the_scene)
+{
+    const int w = 96, h = 64;
+    Vec<uint8_t> y(w * h), u((w / 2) * (h / 2)), v((w / 2) * (h / 2)), uv(w * (h / 2));
+    auto square_of = [](int c, int r) { return ((c + 4) / 5 + (r + 4) / 5) % 2; };
+    auto paint = [&](bool person) {
+        for (int r = 0; r < h; r++)
+            for (int c = 0; c < w; c++)
+                y[r * w + c] = (uint8_t)(square_of(c, r) ? 200 : 60);
+        for (int r = 0; r < h / 2; r++)
+            for (int c = 0; c < w / 2; c++) {
+                const int q = square_of(2 * c, 2 * r);
+                u[r * (w / 2) + c] = uv[r * w + 2 * c] = (uint8_t)(q ? 90 : 160);
+                v[r * (w / 2) + c] = uv[r * w + 2 * c + 1] = (uint8_t)(q ? 170 : 100);
+            }
+        if (person)
+            for (int r = 20; r < 52; r++)
+                for (int c = 41; c < 53; c++)
+                    y[r * w + c] = 250; // brighter: no shadow
+    };
+    static const int scales[] = {1, 4, 2};
+    auto foreground = [](const Background &bg) {
+        return (int)std::count_if(bg.mask(), bg.mask() + bg.width() * bg.height(),
+                                  [](uint8_t m) { return m != 0; });
+    };
+    for (int layout = 0; layout < 3; layout++) { // grey, I420, NV12
+        Planes p;
+        p.width = w;
+        p.height = h;
+        p.y = y.data();
+        p.y_stride = w;
+        if (layout == 1) {
+            p.u = u.data();
+            p.v = v.data();
+            p.u_stride = p.v_stride = w / 2;
+            p.color = true;
+        } else if (layout == 2) {
+            p.u = uv.data();
+            p.v = uv.data() + 1;
+            p.u_stride = p.v_stride = w;
+            p.c_step = 2;
+            p.color = true;
+        }
+        Background bg;
+        int k = 0;
+        paint(false);
+        for (; k < 40; k++) {
+            bg.apply(at(k), p, Background::kStartScale, nullptr, 0);
+            bg.commit();
+        }
+        ck_assert_int_eq(foreground(bg), 0);
+        for (int s : scales) {
+            paint(true);
+            bg.apply(at(k++), p, s, nullptr, 0);
+            bg.commit();
+            ck_assert_int_eq(bg.scale(), s);
+            ck_assert_int_eq(bg.width(), w / s);
+            ck_assert_int_eq(bg.height(), h / s);
+            // Foreground on the person's pixels and off them.
+            auto count = [&](int *person, int *scene) {
+                *person = *scene = 0;
+                for (int r = 0; r < h / s; r++)
+                    for (int c = 0; c < w / s; c++) {
+                        const bool in = c * s >= 41 && c * s < 53 && r * s >= 20 && r * s < 52;
+                        (in ? *person : *scene) += bg.mask()[r * (w / s) + c] != 0;
+                    }
+            };
+            int person, scene;
+            count(&person, &scene);
+            const int cells = ((52 - 1) / s - (20 + s - 1) / s + 1) *
+                              ((53 - 1) / s - (41 + s - 1) / s + 1);
+            ck_assert_msg(scene == 0 && person == cells,
+                          "layout %d, scale %d: %d pixels of the still scene foreground, %d of "
+                          "the person's %d", layout, s, scene, person, cells);
+            // The person leaves: the scene around is still background
+            // (where they stood, a pixel the model at the old scale never
+            // sampled may keep the wrong side of an edge for a while).
+            paint(false);
+            bg.apply(at(k++), p, s, nullptr, 0);
+            bg.commit();
+            count(&person, &scene);
+            ck_assert_msg(scene == 0, "layout %d, scale %d: %d pixels of the still scene "
+                          "foreground after the person left", layout, s, scene);
         }
     }
 }
@@ -138,12 +234,12 @@ START_TEST(ghosts_have_their_edges_in_the_model)
     for (int k = 0; k < 300; k++) { // long enough for the model to learn it
         g.fill(100);
         g.square(20, 40, 20, 200);
-        bg.apply(at(k), g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
     }
     g.fill(100);
     g.square(100, 40, 20, 200); // it left, and another arrived
-    bg.apply(at(300), g.planes(), nullptr, 0);
-    const int s = Background::kScale;
+    bg.apply(at(300), g.planes(), Background::kStartScale, nullptr, 0);
+    const int s = Background::kStartScale;
     Vec<uint8_t> blob(bg.mask(), bg.mask() + bg.width() * bg.height());
     const Rect ghost{20 / s, 40 / s, 40 / s, 60 / s}, real{100 / s, 40 / s, 120 / s, 60 / s};
     ck_assert_int_ge(foreground_in(bg, 20, 40, 40, 60), 90);
@@ -157,7 +253,7 @@ START_TEST(ghosts_have_their_edges_in_the_model)
     ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0);
     g.fill(100);
     g.square(102, 40, 20, 200);
-    bg.apply(at(301), g.planes(), nullptr, 0);
+    bg.apply(at(301), g.planes(), Background::kStartScale, nullptr, 0);
     ck_assert_int_eq(foreground_in(bg, 20, 40, 40, 60), 0); // and stays learnt
     ck_assert_int_ge(foreground_in(bg, 102, 40, 122, 60), 90);
 }
@@ -174,11 +270,11 @@ START_TEST(stopped_person_under_a_track_is_not_absorbed)
             int x = k < 30 ? 10 + 2 * k : 70; // walks, then stands at 70
             g.fill(100);
             g.square(x, 40, 20, 200);
-            Rect r{x / Background::kScale - 1, 40 / Background::kScale - 1,
-                   (x + 20) / Background::kScale + 1, 60 / Background::kScale + 1};
-            bg.apply(at(k), g.planes(), &r, frozen);
+            Rect r{x / Background::kStartScale - 1, 40 / Background::kStartScale - 1,
+                   (x + 20) / Background::kStartScale + 1, 60 / Background::kStartScale + 1};
+            bg.apply(at(k), g.planes(), Background::kStartScale, &r, frozen);
         }
-        const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+        const int cells = (20 / Background::kStartScale) * (20 / Background::kStartScale);
         int fg = foreground_in(bg, 70, 40, 90, 60);
         if (frozen)
             ck_assert_msg(fg >= cells * 9 / 10, "frozen: %d of %d foreground", fg, cells);
@@ -196,7 +292,7 @@ START_TEST(slow_lighting_ramp_is_absorbed)
     int most = 0;
     for (int k = 0; k < 240; k++) {
         g.fill(60 + k / 4);
-        bg.apply(at(k), g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
         if (k > 20)
             most = std::max(most, foreground_in(bg, 0, 0, W, H));
     }
@@ -213,7 +309,7 @@ START_TEST(no_lasting_ghost_from_the_first_frame)
     for (int k = 0; k < 40; k++) {
         g.fill(100);
         g.square(10 + 3 * k, 40, 20, 200); // there in frame 1
-        bg.apply(at(k), g.planes(), nullptr, 0);
+        bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
     }
     ck_assert_int_eq(foreground_in(bg, 10, 40, 30, 60), 0); // where it stood
 }
@@ -234,16 +330,16 @@ START_TEST(start_lasts_the_same_time_at_any_frame_rate)
         for (; k / fps < 1.0; k++) {
             g.fill(100);
             g.square(10 + (int)(100 * k / fps), 40, 20, 200);
-            bg.apply(at(k, fps), g.planes(), nullptr, 0);
+            bg.apply(at(k, fps), g.planes(), Background::kStartScale, nullptr, 0);
         }
         ck_assert_msg(foreground_in(bg, 10, 40, 30, 60) == 0, "%g frames/s: a ghost at 1 s",
                       fps);
         for (; k / fps < 1.3; k++) {
             g.fill(100);
             g.square(120, 80, 20, 150);
-            bg.apply(at(k, fps), g.planes(), nullptr, 0);
+            bg.apply(at(k, fps), g.planes(), Background::kStartScale, nullptr, 0);
         }
-        const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+        const int cells = (20 / Background::kStartScale) * (20 / Background::kStartScale);
         const int fg = foreground_in(bg, 120, 80, 140, 100);
         ck_assert_msg(fg >= cells * 9 / 10, "%g frames/s: %d of %d foreground 0.3 s after", fps,
                       fg, cells);
@@ -263,9 +359,9 @@ START_TEST(start_with_timestamps_far_apart)
         g.fill(100);
         if (k == 3)
             g.square(120, 80, 20, 200);
-        bg.apply(ts[k], g.planes(), nullptr, 0);
+        bg.apply(ts[k], g.planes(), Background::kStartScale, nullptr, 0);
     }
-    const int cells = (20 / Background::kScale) * (20 / Background::kScale);
+    const int cells = (20 / Background::kStartScale) * (20 / Background::kStartScale);
     ck_assert_int_ge(foreground_in(bg, 120, 80, 140, 100), cells * 9 / 10);
     ck_assert_int_eq(foreground_in(bg, 0, 0, 100, H), 0);
 }
@@ -288,7 +384,7 @@ START_TEST(fragments_merge_and_groups_split)
     Classifier cls;
     PersonSize size;
     Vec<Rect> out;
-    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 3);
     int merged = 0, parts = 0;
     for (const Rect &r : out) {
@@ -320,7 +416,7 @@ START_TEST(groups_split_by_the_learnt_size)
     };
     rect(60, 20, 92, 60);  // 32 x 40, a flat top: no heads to cut between
     rect(120, 48, 132, 60); // a speck of 12 x 12, its feet on the same row
-    const int s = Background::kScale;
+    const int s = Background::kStartScale;
     auto learnt = [&](double aspect) {
         PersonSize p;
         p.reset(H * s);
@@ -335,9 +431,9 @@ START_TEST(groups_split_by_the_learnt_size)
     Classifier cls;
     Vec<Rect> out;
     const PersonSize unknown, narrow = learnt(0.4), wide = learnt(0.8);
-    bf.find(m.data(), W, H, nullptr, 0, unknown, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, unknown, cls, out);
     ck_assert(std::any_of(out.begin(), out.end(), [](const Rect &r) { return r.x0 >= 120; }));
-    bf.find(m.data(), W, H, nullptr, 0, narrow, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, narrow, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     for (size_t i = 0; i < out.size(); i++) {
         ck_assert_int_lt(out[i].x1, 100); // no speck
@@ -345,7 +441,7 @@ START_TEST(groups_split_by_the_learnt_size)
         ck_assert_int_ge(out[i].x1 - out[i].x0, 12);
         ck_assert_int_le(out[i].x1 - out[i].x0, 20);
     }
-    bf.find(m.data(), W, H, nullptr, 0, wide, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, wide, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
     ck_assert_int_eq(out[0].x0, 60);
     ck_assert_int_eq(out[0].x1, 92);
@@ -372,7 +468,7 @@ START_TEST(close_pair_splits_between_tracks)
     Vec<Rect> out;
     auto track_at = [](int centre) { return Rect{centre - 8, 20, centre + 8, 60}; };
     const Rect two[2] = {track_at(88), track_at(100)}; // 12 apart, 0.3 heights
-    bf.find(m.data(), W, H, two, 2, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, two, 2, size, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     const Rect &right = out[0].x0 < out[1].x0 ? out[1] : out[0];
@@ -382,11 +478,11 @@ START_TEST(close_pair_splits_between_tracks)
     ck_assert_int_eq(right.x0, 94);
     // No tracks, one, or two closer than a fifth of the height: one blob.
     for (int n : {0, 1}) {
-        bf.find(m.data(), W, H, two, n, size, cls, out);
+        bf.find(m.data(), W, H, Background::kStartScale, two, n, size, cls, out);
         ck_assert_int_eq((int)out.size(), 1);
     }
     const Rect close[2] = {track_at(92), track_at(97)}; // 5 apart
-    bf.find(m.data(), W, H, close, 2, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, close, 2, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -455,10 +551,10 @@ START_TEST(pair_splits_between_heads)
     PersonSize size;
     Vec<Rect> out;
     person(40);
-    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
     person(58); // heads at columns 55 and 73: 0.225 heights apart
-    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 2);
     const Rect &left = out[0].x0 < out[1].x0 ? out[0] : out[1];
     ck_assert_msg(left.x1 > 58 && left.x1 < 70, "cut at %d, not between the heads (55, 73)",
@@ -468,7 +564,7 @@ START_TEST(pair_splits_between_heads)
         for (int c = 40; c < 88; c++)
             if (r >= 30 || (c >= 46 && c < 54) || (c >= 74 && c < 82))
                 m[r * W + c] = 255;
-    bf.find(m.data(), W, H, nullptr, 0, size, cls, out);
+    bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
 }
 END_TEST
@@ -748,6 +844,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, repeated_silhouettes_are_compared_once);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);
+    tcase_add_test(tc, a_new_scale_keeps_the_scene);
     tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);

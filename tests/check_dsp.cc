@@ -146,9 +146,14 @@ START_TEST(background_rows_match_the_portable_build)
                               "flags 0x%x, width %d, trial %d, output %d: differs from the "
                               "portable build", flags, w, trial, k);
 
-            // Gathering: luma every other pixel, with and without the
-            // exposure table; NV12's interleaved chroma.
-            Vec<uint8_t> src(2 * (size_t)w + 1), lut(256), uv(2 * (size_t)w + 1);
+            // Gathering at each working scale: luma every scale-th pixel,
+            // with and without the exposure table; NV12's interleaved
+            // chroma, one sample for two working pixels at scale 1. Each
+            // build gives what the definition says.
+            static const int kScales[] = {1, 2, 4};
+            const int sc = kScales[trial % 3];
+            const int c_step = sc == 1 ? 2 : sc; // NV12's bytes between samples used
+            Vec<uint8_t> src(sc * (size_t)w + 1), lut(256), uv(c_step * (size_t)w + 2);
             for (uint8_t &v : src)
                 v = next_byte();
             for (uint8_t &v : uv)
@@ -163,9 +168,11 @@ START_TEST(background_rows_match_the_portable_build)
             BgGather g;
             g.src_y = src.data();
             g.lut = trial % 2 ? lut.data() : nullptr;
-            g.su = trial % 3 ? uv.data() : nullptr;
+            g.su = trial % 5 ? uv.data() : nullptr;
             g.sv = uv.data() + 1;
-            g.c_step = 2;
+            g.c_step = c_step;
+            g.c_half = sc == 1;
+            g.scale = sc;
             g.w = w;
             BgGather ha = g, hb = g;
             ha.iy = ga[0].data(), ha.iu = ga[1].data(), ha.iv = ga[2].data();
@@ -173,8 +180,17 @@ START_TEST(background_rows_match_the_portable_build)
             ref.bg_gather_row(ha);
             d.bg_gather_row(hb);
             for (int k = 0; k < 3; k++)
-                ck_assert_msg(ga[k] == gb[k], "flags 0x%x, width %d: gathering differs", flags,
-                              w);
+                ck_assert_msg(ga[k] == gb[k], "flags 0x%x, width %d, scale %d: gathering differs",
+                              flags, w, sc);
+            for (int x = 0; x < w; x++) {
+                const uint8_t l = src[(size_t)x * sc];
+                ck_assert_int_eq(ga[0][x], g.lut ? lut[l] : l);
+                if (g.su) {
+                    const size_t c = (size_t)(sc == 1 ? x >> 1 : x) * c_step;
+                    ck_assert_int_eq(ga[1][x], uv[c]);
+                    ck_assert_int_eq(ga[2][x], uv[c + 1]);
+                }
+            }
         }
     });
 }

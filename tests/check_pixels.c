@@ -62,6 +62,18 @@ static ct_frame frame_of(const image *im, uint32_t format, int64_t us)
     return f;
 }
 
+/* From the pixels alone, every candidate may start a track: the drawn
+ * people are simple shapes, which the contour template need not take for
+ * pedestrians, and these tests are about the path from the pixels to
+ * tracks. */
+static ct_config pixels_config(void)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    cfg.candidate_min_score = cfg.low_score;
+    return cfg;
+}
+
 static size_t step_pixels(ct_tracker *t, const image *im, uint32_t format, int64_t us,
                           const ct_detection *d, size_t n, ct_track *out)
 {
@@ -317,12 +329,8 @@ END_TEST
  * may not add detections; the candidates can be read. */
 START_TEST(pixels_alone)
 {
-    ct_config cfg = test_config();
-    cfg.source = CT_SOURCE_PIXELS;
-    /* The drawn person is an ellipse, which the contour template need not
-     * take for a pedestrian: this test is about the path from the pixels to
-     * tracks, so every candidate may start one. */
-    cfg.candidate_min_score = cfg.low_score;
+    /* The drawn person is an ellipse (pixels_config()). */
+    ct_config cfg = pixels_config();
     ct_tracker *t = test_tracker(&cfg);
     static image im;
     ct_track out[64];
@@ -410,9 +418,7 @@ END_TEST
  * same buffers, read through their strides. */
 START_TEST(a_new_frame_size_starts_the_model_again)
 {
-    ct_config cfg = test_config();
-    cfg.source = CT_SOURCE_PIXELS;
-    cfg.candidate_min_score = cfg.low_score; /* as in pixels_alone */
+    ct_config cfg = pixels_config();
     ct_tracker *t = test_tracker(&cfg);
     static image im;
     ct_track out[64];
@@ -673,9 +679,7 @@ static void bgr_to_i420_reference(const uint8_t *bgr, uint8_t *y, uint8_t *u, ui
 
 START_TEST(packed_colour_frames_track_as_their_planes)
 {
-    ct_config cfg = test_config();
-    cfg.source = CT_SOURCE_PIXELS;
-    cfg.candidate_min_score = cfg.low_score; /* every candidate may start a track */
+    ct_config cfg = pixels_config();
     ct_tracker *tb = test_tracker(&cfg), *tr = test_tracker(&cfg), *ti = test_tracker(&cfg);
     static uint8_t bgr[PSTRIDE * PH], rgb[PSTRIDE * PH];
     static uint8_t y[PW * PH], u[((PW + 1) / 2) * ((PH + 1) / 2)], v[sizeof u];
@@ -747,11 +751,9 @@ END_TEST
  * after a few seconds its line gives both heights within a tenth. */
 START_TEST(person_size_learnt_from_walkers_at_two_depths)
 {
-    ct_config cfg = test_config();
-    cfg.source = CT_SOURCE_PIXELS;
-    /* As in pixels_alone: the far person, 25 rows at the background
-     * model's scale, is not always taken for a pedestrian. */
-    cfg.candidate_min_score = cfg.low_score;
+    /* The far person, 25 rows at the background model's scale, is not
+     * always taken for a pedestrian (pixels_config()). */
+    ct_config cfg = pixels_config();
     ct_tracker *t = test_tracker(&cfg);
     static image im;
     ct_track out[64];
@@ -779,10 +781,69 @@ START_TEST(person_size_learnt_from_walkers_at_two_depths)
     ck_assert_int_eq(ps.known, 0);
     ck_assert_int_eq(ct_tracker_get_person_size(NULL, &ps), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_int_eq(ct_tracker_get_person_size(t, NULL), CT_ERROR_INVALID_ARGUMENT);
+    /* A caller whose header ends the struct at samples (before 0.9.0's
+     * typical_height) gets those fields, and nothing past them. */
+    memset(&ps, 0x5a, sizeof ps);
+    ps.size = offsetof(ct_person_size, typical_height);
+    ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+    ck_assert_int_eq(ps.known, 0);
+    ck_assert_int_eq(ps.working_scale, 0x5a5a5a5a);
     ps.size = 4;
     ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "ct_person_size"));
     ct_tracker_destroy(t);
+}
+END_TEST
+
+/* The working scale follows the people's size (0.9.0): from the pixels
+ * alone the foreground is found on every other pixel of every other row
+ * (scale 2) until the size is known; two people 44 pixels tall take it to
+ * every pixel (1), two 200 pixels tall to every fourth (4) once 200 boxes
+ * are behind the size, and people 70 pixels tall leave it at 2. The people
+ * are still followed at the scale taken. */
+START_TEST(working_scale_follows_the_people_size)
+{
+    static const struct {
+        int tall, top, want;
+    } cases[] = {{44, 120, 1}, {70, 100, 2}, {200, 20, 4}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        ct_config cfg = pixels_config();
+        ct_tracker *t = test_tracker(&cfg);
+        static image im;
+        ct_track out[64];
+        ct_person_size ps = {.size = sizeof ps};
+        ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+        ck_assert_int_eq(ps.working_scale, 0); /* no pixels yet */
+        const int tall = cases[c].tall, top = cases[c].top;
+        size_t n = 0;
+        for (int k = 0; k < 130; k++) {
+            draw(&im, -1, 0);
+            draw_pedestrian_of(&im, 30 + 2.0 * k, top, tall);
+            draw_pedestrian_of(&im, 290 - 2.0 * k, top, tall);
+            n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+            if (k == 0) {
+                ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+                ck_assert_int_eq(ps.working_scale, 2);
+            }
+        }
+        ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+        ck_assert_msg(ps.working_scale == cases[c].want && fabs(ps.typical_height - tall) < 0.2 * tall,
+                      "people %d pixels tall: scale %d (want %d), typical height %.1f from %llu "
+                      "boxes", tall, ps.working_scale, cases[c].want, (double)ps.typical_height,
+                      (unsigned long long)ps.samples);
+        int followed = 0;
+        for (size_t i = 0; i < n; i++)
+            followed += out[i].state == CT_TRACK_CONFIRMED && fabs(out[i].height - tall) < 0.25 * tall;
+        ck_assert_msg(followed == 2, "people %d pixels tall: %d of 2 followed at scale %d", tall,
+                      followed, ps.working_scale);
+        /* A reset starts again at 2. */
+        ck_assert_int_eq(ct_tracker_reset(t), CT_OK);
+        draw(&im, -1, 0);
+        step_pixels(t, &im, CT_FORMAT_I420, 100 * SEC, NULL, 0, out);
+        ck_assert_int_eq(ct_tracker_get_person_size(t, &ps), CT_OK);
+        ck_assert_int_eq(ps.working_scale, 2);
+        ct_tracker_destroy(t);
+    }
 }
 END_TEST
 
@@ -853,6 +914,7 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, a_track_predicted_far_away);
     tcase_add_test(tc, packed_colour_frames_track_as_their_planes);
     tcase_add_test(tc, person_size_learnt_from_walkers_at_two_depths);
+    tcase_add_test(tc, working_scale_follows_the_people_size);
     tcase_add_test(tc, size_test_scores_by_size_and_aspect);
     suite_add_tcase(s, tc);
     return s;

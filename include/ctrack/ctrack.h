@@ -505,6 +505,17 @@ typedef struct ct_person_size {
     float width_ratio;
     /* The boxes seen so far. */
     uint64_t samples;
+    /* Added in 0.9.0 with the working scale: a typical person's height
+     * where people were seen (pixels: the line's height at the mean feet
+     * row of the boxes; 0 while unknown), and from the pixels the scale
+     * the foreground is found at, in frame pixels a working pixel: 2 until
+     * the size is known, then 1 while a typical person is under about 55
+     * pixels tall and 4 once the size rests on 200 boxes and a typical
+     * person is over about 160 (0 until a foreground was found: with
+     * detections and without verify_detections there is none). The
+     * memory for the pixels follows it: 4 times as much at 1. */
+    float typical_height;
+    int32_t working_scale;
 } ct_person_size;
 
 /* Fills *out (out->size must be set). ct_tracker_reset() forgets it, as a

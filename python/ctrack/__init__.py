@@ -294,7 +294,10 @@ class Tracker:
         or newer): a dict with `known`, and the height in pixels of a
         standing person whose feet are at row y, `height_slope * y +
         height_intercept`, the `width_ratio` three people in four stay under,
-        and the `samples` seen. None with an older library."""
+        the `samples` seen, a `typical_height`, and from the pixels the
+        `working_scale` (frame pixels a working pixel of the foreground: 1,
+        2 or 4; 0 until a foreground was found). None with an older
+        library."""
         if not hasattr(self._lib, "ct_tracker_get_person_size"):
             return None
         s = _abi.PersonSize()
@@ -302,7 +305,8 @@ class Tracker:
         self._check(self._lib.ct_tracker_get_person_size(self._handle(), ctypes.byref(s)))
         return {"known": bool(s.known), "height_slope": s.height_slope,
                 "height_intercept": s.height_intercept, "width_ratio": s.width_ratio,
-                "samples": s.samples}
+                "samples": s.samples, "typical_height": s.typical_height,
+                "working_scale": s.working_scale}
 
     def stats(self):
         """The library's counters: steps, feed time and time per stage (in

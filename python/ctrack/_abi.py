@@ -163,6 +163,8 @@ class PersonSize(C.Structure):
         ("height_intercept", C.c_float),
         ("width_ratio", C.c_float),
         ("samples", C.c_uint64),
+        ("typical_height", C.c_float),
+        ("working_scale", C.c_int32),
     ]
 
 

@@ -152,6 +152,18 @@ else
     else
         ok "overlay draws the person size"
     fi
+    # From the pixels, the working scale is drawn from the first frame on
+    # (the size itself only once learnt).
+    expect "overlay with the working scale" 0 "" -- "$ct" -q -o /dev/null \
+        --overlay "$tmp/ovw.y4m" --overlay-size "$tmp/tud.y4m"
+    expect "overlay of the pixels without it" 0 "" -- "$ct" -q -o /dev/null \
+        --overlay "$tmp/ovn.y4m" "$tmp/tud.y4m"
+    first=$(( $(head -1 "$tmp/ovw.y4m" | wc -c) + 6 + 640 * 480 * 3 / 2 ))
+    if cmp -s <(head -c $first "$tmp/ovw.y4m") <(head -c $first "$tmp/ovn.y4m"); then
+        bad "overlay draws the working scale in the first frame" "same first frame"
+    else
+        ok "overlay draws the working scale in the first frame"
+    fi
     expect "overlay of a grey video" 0 """" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov-gray.y4m" -s 640x480 -f gray "$tmp/tud.gray"
     if cmp -s "$tmp/ov.y4m" "$tmp/tud.y4m"; then bad "overlay draws" "frames unchanged"; else ok "overlay draws"; fi
     expect "overlay from standard input to standard output" 0 "" -- sh -c "'$ct' -q -d '$tud/det/det.txt' -o '$tmp/t.txt' --overlay - - < '$tmp/tud.y4m' > '$tmp/ov2.y4m'"

@@ -64,6 +64,7 @@ int main(void)
     FIELD(ct_person_size, size); FIELD(ct_person_size, known);
     FIELD(ct_person_size, height_slope); FIELD(ct_person_size, height_intercept);
     FIELD(ct_person_size, width_ratio); FIELD(ct_person_size, samples);
+    FIELD(ct_person_size, typical_height); FIELD(ct_person_size, working_scale);
     first = 0;
     printf("}, \"Allocator\": {\"sizeof\": %zu, ", sizeof(ct_allocator));
     FIELD(ct_allocator, size); FIELD(ct_allocator, alloc); FIELD(ct_allocator, free);

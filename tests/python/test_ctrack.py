@@ -269,8 +269,12 @@ def test_pixels_alone_on_real_frames():
     frames = np.frombuffer(raw, np.uint8).reshape(-1, 480 * 3 // 2, 640)
     seen = 0
     with ctrack.Tracker(fps=25, source=ctrack.SOURCE_PIXELS) as t:
+        assert t.person_size()["working_scale"] == 0
         for f in frames:
             t.feed(f, format="i420")
+            # Its people (150 to 300 pixels tall) would take the pixels to
+            # every fourth only after 200 boxes: 30 frames stay at 2.
+            assert t.person_size()["working_scale"] == 2
             c = t.candidates()
             seen += len(c)
             assert set(c.dtype.names) >= {"left", "score", "votes_yes", "voters",
@@ -301,8 +305,12 @@ def test_person_size_is_learnt(tud_bgr):
         assert height(300) < height(440)
         assert 0.25 <= p["width_ratio"] <= 0.6
         t.reset()
+        assert 150 <= p["typical_height"] <= 320
+        assert p["working_scale"] == 0  # detections, not verified: no foreground
+        t.reset()
         assert t.person_size() == {"known": False, "height_slope": 0.0,
-                                   "height_intercept": 0.0, "width_ratio": 0.0, "samples": 0}
+                                   "height_intercept": 0.0, "width_ratio": 0.0, "samples": 0,
+                                   "typical_height": 0.0, "working_scale": 0}
 
 
 def test_verify_detections_on_real_frames():

@@ -195,11 +195,15 @@ void overlay_set_person_size(overlay_writer *ov, const ct_person_size *size)
 }
 
 /* The people's size: at feet rows from a third of the image down, the box
- * of a person standing there, yellow, on both edges. */
+ * of a person standing there, yellow, on both edges; and the working scale
+ * of the pixels (frame pixels a working pixel), a yellow number at the
+ * bottom left. */
 static void draw_person_size(overlay_writer *ov)
 {
     static const uint8_t yellow[3] = {210, 16, 146};
     const ct_person_size *s = &ov->size;
+    if (s->working_scale > 0 && ov->h > 20)
+        label(ov, 2, ov->h - 16, (uint64_t)s->working_scale, yellow, 2);
     if (!s->known)
         return;
     for (int k = 0; k < 4; k++) {
