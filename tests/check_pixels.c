@@ -899,6 +899,10 @@ static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
     TCase *tc = tcase_create("pixels");
+    /* Under ThreadSanitizer (make tsan) the walkers of
+     * working_scale_follows_the_people_size take some 5 s, past Check's
+     * default of 4. */
+    tcase_set_timeout(tc, 60);
     tcase_add_loop_test(tc, follows_through_missing_detections, 0, 3);
     tcase_add_test(tc, without_mean_shift_the_track_is_lost);
     tcase_add_loop_test(tc, lets_go_when_the_person_is_gone, 0, 3);

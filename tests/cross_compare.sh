@@ -2,7 +2,8 @@
 # The arm64 build gives the tracks the build machine's gives, byte for byte:
 # ct-track of both builds over the public detections of the six sequences,
 # and TUD-Campus and PETS09-S2L1 from their pixels alone and with their
-# detections (PETS09-S2L1's frames fetched once, as make eval does). The arm64 program runs under qemu-aarch64.
+# detections (PETS09-S2L1's frames fetched once, as make eval does), and PETS09-S2L1
+# at half size from its pixels. The arm64 program runs under qemu-aarch64.
 #   cross_compare.sh NATIVE_CT_TRACK ARM64_CT_TRACK DATA_DIR
 set -eu
 native=$1 arm=$2 data=$3
@@ -40,5 +41,9 @@ same "TUD-Campus, detections + pixels" -d "$data/TUD-Campus/det/det.txt" "$tmp/t
 pets=$("$(dirname "$0")/../scripts/fetch-pets09.sh")
 same "PETS09-S2L1, pixels only" -r 7 "$pets"
 same "PETS09-S2L1, detections + pixels" -d "$data/PETS09-S2L1/det/det.txt" "$pets"
+# At half size: the pixels read at every pixel once the people's size is
+# known (the working scale 1, its gathering of one chroma sample for two).
+ffmpeg -v error -i "$pets" -vf scale=384:288 -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/half.y4m"
+same "PETS09-S2L1 at half size, pixels only" -r 7 "$tmp/half.y4m"
 [ "$fail" = 0 ] && echo "cross_compare: $n replays, the same tracks on aarch64 as on $(uname -m)"
 exit $fail
