@@ -510,10 +510,11 @@ typedef struct ct_person_size {
      * row of the boxes; 0 while unknown), and from the pixels the scale
      * the foreground is found at, in frame pixels a working pixel: 2 until
      * the size is known, then 1 while a typical person is under about 55
-     * pixels tall and 4 once the size rests on 200 boxes and a typical
-     * person is over about 160 (0 until a foreground was found: with
-     * detections and without verify_detections there is none). The
-     * memory for the pixels follows it: 4 times as much at 1. */
+     * pixels tall (not with pedestrian_test = CT_PEDESTRIAN_SIZE), and 4
+     * once the size rests on 200 boxes and a typical person is over about
+     * 160 (0 until a foreground was found: with detections and without
+     * verify_detections there is none). The memory for the pixels follows
+     * it: 4 times as much at 1. */
     float typical_height;
     int32_t working_scale;
 } ct_person_size;
