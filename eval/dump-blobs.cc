@@ -59,7 +59,7 @@ int main(int argc, char **argv)
                     nullptr, 0);
         int w, h;
         const uint8_t *mask = engine.foreground(&w, &h);
-        const int s = engine.foreground_scale();
+        const int s = engine.working_scale();
         for (const ct_candidate &c : engine.candidates()) {
             const int32_t head[6] = {k, (int32_t)(c.left / s), (int32_t)(c.top / s),
                                      (int32_t)(c.width / s), (int32_t)(c.height / s), s};

@@ -53,12 +53,11 @@ public:
     const uint64_t *stage_ns() const { return stage_ns_; }
     bool has_time() const { return has_time_; }
     // This step's cleaned foreground mask at the background model's scale
-    // (foreground_scale() frame pixels a working pixel), or null when the
+    // (working_scale() frame pixels a working pixel), or null when the
     // step had no pixels.
     const uint8_t *foreground(int *w, int *h) const { return pixels_.foreground(w, h); }
-    int foreground_scale() const { return pixels_.scale(); }
-    // The pixels' working scale (1, 2 or 4), 0 before a frame's pixels were
-    // read (since the last reset).
+    // The pixels' working scale (1, 2 or 4), 0 until the background model
+    // has learnt a frame (since the last reset).
     int working_scale() const { return pixels_.started() ? pixels_.scale() : 0; }
     int64_t last_time() const { return last_us_; }
 
