@@ -8,6 +8,7 @@
 #include "clock.h"
 #include "cpu.h"
 #include "mask.h"
+#include "tunable.h"
 
 #if defined(__GNUC__)
 // The 32-byte vectors of the AVX2 build live only inside its inlined loop:
@@ -21,7 +22,8 @@ namespace {
 
 // Sigma-Delta's amplification: V follows N |I - M|.
 constexpr int kN = 4;
-// Bounds of V: below kVMin, sensor noise would show; above kVMax, nothing.
+// Bounds of V: below kVMin, compression and flicker would show (at the
+// scene's usual contrast, below); above kVMax, nothing.
 constexpr int kVMin = 25, kVMax = 80;
 // While the model starts (its first kWarmupUs microseconds), M and V move
 // up to kWarmupRate levels a second (at least one a frame), so that people
@@ -56,7 +58,23 @@ constexpr int kChromaForeground = 24;
 // Sensor noise, learnt from the frames (NoiseLevel): the decisions never
 // fall under these many standard deviations of the scene's noise, in luma
 // (V's floor) and in chroma (the colour test and the shadows' tolerance).
-constexpr double kLumaNoise = 5.0, kChromaNoise = 4.0, kShadowNoise = 1.0;
+// Chosen over three strengths of noise and two seeds each
+// (docs/tuning.md, "Pixels only: noise, contrast and black level").
+CT_TUNABLE(kLumaNoise, "CTRACK_LUMA_NOISE", 3.5);
+constexpr double kChromaNoise = 4.0, kShadowNoise = 1.0;
+
+// The scene's contrast and black level (NoiseLevel). V's floor is kVMin at
+// a contrast of kContrastRef grey levels (the model's median absolute
+// deviation of luma) or more, and falls with it below, to kVMinLowest: a
+// person's differences from the scene fall with its contrast. A shadow's
+// ratio to the model is taken above the black level: the model's first
+// percentile of luma less kBlackBelow, a little above video black (16),
+// where a lifted black (haze, a washed-out picture) would make a dark
+// coat's ratio to the ground a shadow's. Same docs/tuning.md section.
+CT_TUNABLE(kContrastRef, "CTRACK_CONTRAST_REF", 41);
+CT_TUNABLE(kBlackBelow, "CTRACK_BLACK_BELOW", 16);
+constexpr int kVMinLowest = 10;
+constexpr double kDarkPercentile = 0.01;
 
 // The model's update and test of one pixel, in ints: the reference, which
 // the vector builds (luma_bytes() and colour_bytes() below) match bit for
@@ -77,6 +95,7 @@ struct Rates {
     // over which a pixel is foreground and under which a shadow keeps its
     // colour.
     int vmin, chroma_fg, shadow_chroma;
+    int black; // the scene's black level: shadows are ratios above it
 };
 
 // Luma: M and V learn where `live` (the pixel is not frozen); returns the
@@ -101,8 +120,10 @@ CT_ALWAYS_INLINE T colour(T I, T U, T W, T &M, T &V, T &BU, T &BV, T live, const
     BU = live ? step_toward(BU, U, r.step) : BU;
     BV = live ? step_toward(BV, W, r.step) : BV;
     const T fg = luma(I, M, V, live, r);
-    const T shadow = fg & (I < M) & (splat<T>(16) * I >= splat<T>(kShadowLow) * M) &
-                     (splat<T>(16) * I <= splat<T>(kShadowHigh) * M) &
+    const T Ib = vmax(I - splat<T>(r.black), splat<T>(0));
+    const T Mb = vmax(M - splat<T>(r.black), splat<T>(0));
+    const T shadow = fg & (I < M) & (splat<T>(16) * Ib >= splat<T>(kShadowLow) * Mb) &
+                     (splat<T>(16) * Ib <= splat<T>(kShadowHigh) * Mb) &
                      (dc <= splat<T>(r.shadow_chroma));
     return shadow ? splat<T>(0) : fg | (dc > splat<T>(r.chroma_fg));
 }
@@ -135,12 +156,12 @@ template <typename B> CT_ALWAYS_INLINE B toward(B m, B target, B step)
 // changes no decision (the differences they are compared with lie there;
 // V's floor is at least 0, as BgRow says).
 template <typename B> struct ByteRates {
-    B step, vmin, chroma_fg, shadow_chroma, warm;
+    B step, vmin, chroma_fg, shadow_chroma, warm, black;
     explicit ByteRates(const Rates &r)
         : step(bsplat<B>(r.step)), vmin(bsplat<B>(std::min(r.vmin, 255))),
           chroma_fg(bsplat<B>(std::min(r.chroma_fg, 255))),
           shadow_chroma(bsplat<B>(std::min(r.shadow_chroma, 255))),
-          warm(bsplat<B>(r.warm ? 255 : 0))
+          warm(bsplat<B>(r.warm ? 255 : 0)), black(bsplat<B>(std::min(r.black, 255)))
     {
     }
 };
@@ -159,8 +180,9 @@ template <typename B> CT_ALWAYS_INLINE B luma_bytes(B I, B &M, B &V, B live, con
     return (B)(D > V);
 }
 
-// colour(): 16 I >= kShadowLow M is I >= ceil(M / 2), and 16 I <=
-// kShadowHigh M is I <= M - ceil(M / 16).
+// colour(): with I and M above the black level (saturated at 0), 16 I >=
+// kShadowLow M is I >= ceil(M / 2), and 16 I <= kShadowHigh M is I <= M -
+// ceil(M / 16).
 // dc is the chroma's difference from the model before the update:
 // max(|U - BU|, |W - BV|).
 template <typename B>
@@ -171,9 +193,10 @@ CT_ALWAYS_INLINE B colour_bytes(B I, B U, B W, B dc, B &M, B &V, B &BU, B &BV, B
     BU = live ? toward(BU, U, r.step) : BU;
     BV = live ? toward(BV, W, r.step) : BV;
     const B fg = luma_bytes(I, M, V, live, r);
-    const B half = M - (M >> 1);
-    const B sixteenth = (M >> 4) - (B)((M & bsplat<B>(15)) != bsplat<B>(0));
-    const B shadow = fg & (B)(I < M) & (B)(I >= half) & (B)(I <= M - sixteenth) &
+    const B Ib = subs(I, r.black), Mb = subs(M, r.black);
+    const B half = Mb - (Mb >> 1);
+    const B sixteenth = (Mb >> 4) - (B)((Mb & bsplat<B>(15)) != bsplat<B>(0));
+    const B shadow = fg & (B)(I < M) & (B)(Ib >= half) & (B)(Ib <= Mb - sixteenth) &
                      (B)(dc <= r.shadow_chroma);
     return shadow ? bsplat<B>(0) : fg | (B)(dc > r.chroma_fg);
 }
@@ -196,7 +219,7 @@ template <typename B> CT_ALWAYS_INLINE void store_bytes(uint8_t *p, B b)
 // checks every build against the portable one, bit for bit).
 template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
 {
-    const Rates r{a.step, a.warm, a.vmin, a.chroma_fg, a.shadow_chroma};
+    const Rates r{a.step, a.warm, a.vmin, a.chroma_fg, a.shadow_chroma, a.black};
     const uint8_t *__restrict iy = a.iy, *__restrict iu = a.iu, *__restrict iv = a.iv;
     const uint8_t *__restrict om = a.om, *__restrict ov = a.ov;
     const uint8_t *__restrict ou = a.ou, *__restrict ow = a.ow;
@@ -344,8 +367,16 @@ Dsp Background::make_dsp()
 
 void NoiseSamples::begin()
 {
-    hist_.assign(8 * 256, 0);
-    n = 0;
+    hist_.assign(9 * 256, 0);
+    n = m_n = 0;
+}
+
+void NoiseSamples::levels(const uint8_t *my, int w)
+{
+    uint32_t *h = m();
+    for (int x = 0; x < w; x += 4)
+        h[my[x]]++;
+    m_n += (uint32_t)((w + 3) / 4);
 }
 
 void NoiseSamples::sample(const uint8_t *dy, const uint8_t *dc, const uint8_t *frozen, int w)
@@ -412,6 +443,19 @@ void NoiseLevel::end(const NoiseSamples &s, double dt)
     const double rate = known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
     luma += rate * (y - luma);
     chroma += rate * (c - chroma);
+    if (s.m_n > 0) {
+        const uint32_t *m = s.m();
+        const int median = (int)median_of(m, s.m_n);
+        uint32_t deviation[256] = {};
+        for (int v = 0; v < 256; v++)
+            deviation[std::abs(v - median)] += m[v];
+        contrast += rate * (median_of(deviation, s.m_n) - contrast);
+        uint32_t below = 0;
+        int v = 0;
+        while (v < 255 && (below += m[v]) < kDarkPercentile * s.m_n)
+            v++;
+        dark += rate * (v - dark);
+    }
     known_ = true;
 }
 
@@ -685,10 +729,17 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     // the image: else V stays near kVMax, where it starts, for some 50
     // frames, and hides people with the background's contrast
     // (docs/notes/pixels.md).
-    const Rates rates{step, warm,
-                      std::max(kVMin, (int)std::lround(kLumaNoise * noise_.luma)),
+    const int vmin_contrast =
+        noise_.known()
+            ? std::max(kVMinLowest,
+                       (int)std::lround(kVMin * std::min(1.0, noise_.contrast / kContrastRef)))
+            : kVMin;
+    const Rates rates{step,
+                      warm,
+                      std::max(vmin_contrast, (int)std::lround(kLumaNoise * noise_.luma)),
                       std::max(kChromaForeground, (int)std::lround(kChromaNoise * noise_.chroma)),
-                      std::max(kShadowChroma, (int)std::lround(kShadowNoise * noise_.chroma))};
+                      std::max(kShadowChroma, (int)std::lround(kShadowNoise * noise_.chroma)),
+                      std::max(0, (int)std::lround(noise_.dark - kBlackBelow))};
     // The noise is sampled on a grid of every 4th working pixel, from the
     // model before this frame (not while it starts: it is the image then).
     const bool sample = !restart;
@@ -760,10 +811,13 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
         r.vmin = rates.vmin;
         r.chroma_fg = rates.chroma_fg;
         r.shadow_chroma = rates.shadow_chroma;
+        r.black = rates.black;
         dsp_.bg_update_row(r);
-        if (noise_row)
+        if (noise_row) {
             noise_samples_.sample(line_dy_.data(), color ? line_dc_.data() : nullptr, frozen_y,
                                   w);
+            noise_samples_.levels(r.my, w);
+        }
     }
     if (sample)
         noise_.end(noise_samples_, restart ? 0 : elapsed_s(t_us, old_dims_.last_us));

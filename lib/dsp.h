@@ -24,14 +24,15 @@ namespace ctrack {
 // (om, ov, ou, ow), the model after it and the foreground mask (my, vy, mu,
 // mv, mask), w pixels; frozen pixels are not learnt. Unless noise_y is
 // null, the image's differences from the model before the frame go there,
-// |I - M|, and to noise_c the larger of the chroma's (colour rows).
+// |I - M|, and to noise_c the larger of the chroma's (colour rows). A
+// shadow's ratio to the model is taken above the scene's black level.
 struct BgRow {
     const uint8_t *iy, *iu, *iv, *om, *ov, *ou, *ow, *frozen;
     uint8_t *my, *vy, *mu, *mv, *mask;
     uint8_t *noise_y, *noise_c;
     int w;
     bool color, warm;
-    int step, vmin, chroma_fg, shadow_chroma;
+    int step, vmin, chroma_fg, shadow_chroma, black;
 };
 
 // Gathering one row's samples: luma every `scale`-th pixel of src_y (1, 2

@@ -223,6 +223,90 @@ START_TEST(a_new_scale_keeps_the_scene)
 }
 END_TEST
 
+// A washed-out picture (0.9.0): haze or a camera's low-contrast setting
+// lifts the black level and halves the contrast, I' = I / 2 + 100. A person
+// in a dark coat, a fifth of the ground's luma, is then 0.7 of it: a
+// shadow's ratio, were it taken from 0. Taken above the scene's black
+// level (its darkest percent, less 16), the coat is foreground, and a
+// real shadow (three quarters of the ground, the same colour) is still
+// background; so in the picture as it was.
+START_TEST(a_washed_out_scene_keeps_its_people)
+{
+    Vec<uint8_t> y(W * H), u((W / 2) * (H / 2), 128), v((W / 2) * (H / 2), 128);
+    Planes p;
+    p.width = W;
+    p.height = H;
+    p.y = y.data();
+    p.y_stride = W;
+    p.u = u.data();
+    p.v = v.data();
+    p.u_stride = p.v_stride = W / 2;
+    p.color = true;
+    // The scene: a ramp of luma from 30 to 210 across the columns.
+    auto scene = [](int c) { return 30.0 + 180.0 * c / (W - 1); };
+    const int px0 = 60, px1 = 76, sx0 = 90, sx1 = 110, y0 = 30, y1 = 90;
+    for (int washed = 0; washed < 2; washed++) {
+        auto level = [&](double l) { return (uint8_t)std::lround(washed ? l / 2 + 100 : l); };
+        Background bg;
+        int k = 0;
+        for (; k < 40; k++) {
+            for (int r = 0; r < H; r++)
+                for (int c = 0; c < W; c++)
+                    y[r * W + c] = level(scene(c));
+            if (k == 39)
+                for (int r = y0; r < y1; r++) {
+                    for (int c = px0; c < px1; c++)
+                        y[r * W + c] = level(0.2 * scene(c)); // the coat
+                    for (int c = sx0; c < sx1; c++)
+                        y[r * W + c] = level(0.75 * scene(c)); // a shadow
+                }
+            bg.apply(at(k), p, Background::kStartScale, nullptr, 0);
+            bg.commit();
+        }
+        const int s = Background::kStartScale;
+        const int coat = (px1 - px0) / s * ((y1 - y0) / s), shade = (sx1 - sx0) / s * ((y1 - y0) / s);
+        ck_assert_msg(foreground_in(bg, px0, y0, px1, y1) >= coat * 9 / 10,
+                      "washed %d: %d of the coat's %d pixels foreground", washed,
+                      foreground_in(bg, px0, y0, px1, y1), coat);
+        ck_assert_msg(foreground_in(bg, sx0, y0, sx1, y1) <= shade / 10,
+                      "washed %d: %d of the shadow's %d pixels foreground", washed,
+                      foreground_in(bg, sx0, y0, sx1, y1), shade);
+    }
+}
+END_TEST
+
+// V's floor follows the scene's contrast (0.9.0): on a flat grey scene (a
+// ramp of 40 levels: a median deviation of 10), a person 18 levels darker
+// is foreground, where the floor of a contrasted scene (25) would hide
+// them; on a ramp of 180 levels the same person is not (compression and
+// flicker reach such differences there).
+START_TEST(the_floor_follows_the_contrast)
+{
+    for (int range = 40; range <= 180; range += 140) {
+        Background bg;
+        Gray g;
+        const int px0 = 60, px1 = 76, y0 = 30, y1 = 90;
+        for (int k = 0; k < 40; k++) {
+            for (int r = 0; r < H; r++)
+                for (int c = 0; c < W; c++)
+                    g.y[r * W + c] = (uint8_t)(120 - range / 2 + range * c / (W - 1));
+            if (k == 39)
+                for (int r = y0; r < y1; r++)
+                    for (int c = px0; c < px1; c++)
+                        g.y[r * W + c] = (uint8_t)(g.y[r * W + c] - 18);
+            bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
+            bg.commit();
+        }
+        const int s = Background::kStartScale, cells = (px1 - px0) / s * ((y1 - y0) / s);
+        const int n = foreground_in(bg, px0, y0, px1, y1);
+        if (range == 40)
+            ck_assert_msg(n >= cells * 9 / 10, "low contrast: %d of %d foreground", n, cells);
+        else
+            ck_assert_msg(n == 0, "high contrast: %d of %d foreground", n, cells);
+    }
+}
+END_TEST
+
 // A ghost and a real object: a bright square that stood still long enough
 // to be learnt and then left leaves a blob whose edges are in the model, not
 // in the frame; a square that arrives makes a blob whose edges are in the
@@ -845,6 +929,8 @@ int main(int argc, char **argv)
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);
     tcase_add_test(tc, a_new_scale_keeps_the_scene);
+    tcase_add_test(tc, a_washed_out_scene_keeps_its_people);
+    tcase_add_test(tc, the_floor_follows_the_contrast);
     tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);

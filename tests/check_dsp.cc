@@ -124,6 +124,9 @@ START_TEST(background_rows_match_the_portable_build)
             r.vmin = wide ? next_byte() + next_byte() / 4 : 25 + next_byte() % 30;
             r.chroma_fg = wide ? next_byte() + next_byte() / 4 : 24 + next_byte() % 20;
             r.shadow_chroma = wide ? next_byte() + next_byte() / 4 : 8 + next_byte() % 10;
+            // The black level: none, a scene's (up to 60), or anywhere in
+            // the byte range and past it.
+            r.black = wide ? next_byte() + next_byte() / 4 : trial % 3 == 0 ? 0 : next_byte() % 61;
             // The model, the mask, and (every other trial) the noise's
             // differences.
             Vec<uint8_t> out_a[7], out_b[7];

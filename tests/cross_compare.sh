@@ -3,7 +3,8 @@
 # ct-track of both builds over the public detections of the six sequences,
 # and TUD-Campus and PETS09-S2L1 from their pixels alone and with their
 # detections (PETS09-S2L1's frames fetched once, as make eval does), and PETS09-S2L1
-# at half size from its pixels. The arm64 program runs under qemu-aarch64.
+# at half size and washed out from its pixels. The arm64 program runs under
+# qemu-aarch64.
 #   cross_compare.sh NATIVE_CT_TRACK ARM64_CT_TRACK DATA_DIR
 set -eu
 native=$1 arm=$2 data=$3
@@ -45,5 +46,10 @@ same "PETS09-S2L1, detections + pixels" -d "$data/PETS09-S2L1/det/det.txt" "$pet
 # known (the working scale 1, its gathering of one chroma sample for two).
 ffmpeg -v error -i "$pets" -vf scale=384:288 -f yuv4mpegpipe -pix_fmt yuv420p "$tmp/half.y4m"
 same "PETS09-S2L1 at half size, pixels only" -r 7 "$tmp/half.y4m"
+# Washed out: the background's floor and shadow test follow the scene's
+# contrast and black level, estimates in floating point.
+ffmpeg -v error -i "$pets" -vf eq=contrast=0.55:brightness=0.1 -f yuv4mpegpipe -pix_fmt yuv420p \
+    "$tmp/hazy.y4m"
+same "PETS09-S2L1 washed out, pixels only" -r 7 "$tmp/hazy.y4m"
 [ "$fail" = 0 ] && echo "cross_compare: $n replays, the same tracks on aarch64 as on $(uname -m)"
 exit $fail

@@ -1,0 +1,99 @@
+"""Families of camera conditions: many variants of one condition (levels and
+random seeds), made by ffmpeg from a sequence's frames, so that a score, or
+the choice of a constant, does not rest on one noise pattern, one contrast
+or one picture size. make eval reports ctrack's mean over each family;
+eval/families.py sweeps a tuning build's constants over one."""
+import concurrent.futures
+import os
+import subprocess
+
+import numpy as np
+
+from .data import DATA, ct_track, seqinfo, video
+from .score import score
+
+
+def half(b, w, h):
+    return (b[0] / 2, b[1] / 2, b[2] / 2, b[3] / 2)
+
+
+def half_mirrored(b, w, h):
+    return ((w - b[0] - b[2]) / 2, b[1] / 2, b[2] / 2, b[3] / 2)
+
+
+# Each family: (label, ffmpeg filter, what it does to a box or None) per
+# variant.
+FAMILIES = {
+    # Temporal sensor noise at three strengths (make eval's condition is
+    # 14), two seeds each.
+    "noise": [("alls=%d seed %d" % (a, s), "noise=alls=%d:allf=t:all_seed=%d" % (a, s), None)
+              for a in (8, 14, 20) for s in (1, 2)],
+    # Lower contrast, darker (make eval's condition is 0.55 / -0.12) or
+    # washed out as in haze, where the black level rises; the first is the
+    # frames as they are.
+    "contrast": [("contrast %g brightness %+g" % (c, b), "eq=contrast=%g:brightness=%g" % (c, b),
+                  None)
+                 for c, b in ((1, 0), (0.4, -0.15), (0.55, -0.12), (0.7, -0.06), (1, 0.08),
+                              (0.55, 0.1), (0.7, 0.08))],
+    # Half size (make eval's condition), and with small changes a camera
+    # makes anyway: mirrored, a little brighter or darker, less contrast, a
+    # little noise.
+    "half size": [("half size" + label, "scale=iw/2:ih/2" + vf, move)
+                  for label, vf, move in (("", "", half), (", mirrored", ",hflip", half_mirrored),
+                                          (", brightness +0.04", ",eq=brightness=0.04", half),
+                                          (", brightness -0.04", ",eq=brightness=-0.04", half),
+                                          (", contrast 0.9", ",eq=contrast=0.9", half),
+                                          (", noise 4", ",noise=alls=4:allf=t", half))],
+}
+
+
+def moved(seq, kind, move, path):
+    """The sequence's ground truth or detections (kind "gt" or "det") with
+    their boxes moved as the filter moves them (written to path), or as
+    they are."""
+    src = os.path.join(DATA, seq, kind, kind + ".txt")
+    if move is None:
+        return src
+    info = seqinfo(seq)
+    a = np.loadtxt(src, delimiter=",", ndmin=2)
+    for row in a:
+        row[2:6] = move(row[2:6], info["width"], info["height"])
+    np.savetxt(path, a, delimiter=",", fmt="%.6g")
+    return path
+
+
+def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()):
+    """ct-track over the sequence's frames through the filter, piped from
+    ffmpeg (nothing but the tracks is written), with its detections if
+    asked; returns py-motmetrics' scores (cteval.score)."""
+    info = seqinfo(seq)
+    args = ["-d", moved(seq, "det", move, out + ".det")] if detections else []
+    for p in params:
+        args += ["-p", p]
+    ff = subprocess.Popen(["ffmpeg", "-v", "error", "-i", video(seq), "-vf", vf,
+                           "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
+                          stdout=subprocess.PIPE)
+    try:
+        subprocess.run([ct_track(build), "-q", "-o", out] + args + ["-r", str(info["fps"]), "-"],
+                       stdin=ff.stdout, env=dict(os.environ, **(env or {})), check=True)
+    finally:
+        ff.stdout.close()
+        if ff.wait() != 0:
+            raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
+    return score(moved(seq, "gt", move, out + ".gt"), out)
+
+
+def run_all(jobs, tmp, workers=2, progress=None):
+    """Runs run_variant() for each job, a dict of its keyword arguments
+    (build, seq, vf, move, env, detections, params), `workers` at a time;
+    returns the scores in the jobs' order. progress(done, total) is called
+    after each."""
+    out = [None] * len(jobs)
+    with concurrent.futures.ThreadPoolExecutor(workers) as pool:
+        futs = {pool.submit(run_variant, out=os.path.join(tmp, "family-%d.txt" % i), **j): i
+                for i, j in enumerate(jobs)}
+        for done, f in enumerate(concurrent.futures.as_completed(futs), 1):
+            out[futs[f]] = f.result()
+            if progress:
+                progress(done, len(jobs))
+    return out
