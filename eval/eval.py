@@ -513,8 +513,8 @@ lowered or raised (haze, a washed-out picture), the frames as they are
 first; and half size as it is, mirrored, a little brighter or darker, with
 less contrast and with a little noise. Each cell is the mean over the
 family's variants (how many in brackets) and, in brackets, the lowest
-MOTA / IDF1 among them. The defaults were chosen on these means
-(docs/tuning.md).
+MOTA / IDF1 among them. The background model's constants for noise,
+contrast and black level were chosen on these means (docs/tuning.md).
 
 """
 
