@@ -77,9 +77,12 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
         subprocess.run([ct_track(build), "-q", "-o", out] + args + ["-r", str(info["fps"]), "-"],
                        stdin=ff.stdout, env=dict(os.environ, **(env or {})), check=True)
     finally:
+        # A ct-track that failed leaves ffmpeg writing to a closed pipe:
+        # its error is the one to report.
         ff.stdout.close()
-        if ff.wait() != 0:
-            raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
+        status = ff.wait()
+    if status != 0:
+        raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
     return score(moved(seq, "gt", move, out + ".gt"), out)
 
 
