@@ -84,16 +84,25 @@ def conditioned(seq, name, tmp):
         subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video(seq), "-vf", vf,
                         "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out + ".part"], check=True)
         os.replace(out + ".part", out)
-    paths = []
-    for kind in ("gt", "det"):
-        a = np.loadtxt(os.path.join(DATA, seq, kind, kind + ".txt"), delimiter=",", ndmin=2)
-        if move is not None:
-            for row in a:
-                row[2:6] = move(row[2:6], info["width"], info["height"])
-        paths.append(os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
-        np.savetxt(paths[-1], a, delimiter=",", fmt="%.6g")
+    gt, det = (moved_boxes(seq, kind, move, os.path.join(tmp, "%s-%s.txt" % (tag, kind)))
+               for kind in ("gt", "det"))
     w, h, _, _ = open_y4m(out)
-    return out, paths[0], paths[1], dict(info, width=w, height=h)
+    return out, gt, det, dict(info, width=w, height=h)
+
+
+def moved_boxes(seq, kind, move, path):
+    """The sequence's ground truth or detections (kind "gt" or "det") with
+    their boxes moved as a filter moves the frames (move(box, width, height),
+    written to path), or as they are when move is None."""
+    src = os.path.join(DATA, seq, kind, kind + ".txt")
+    if move is None:
+        return src
+    info = seqinfo(seq)
+    a = np.loadtxt(src, delimiter=",", ndmin=2)
+    for row in a:
+        row[2:6] = move(row[2:6], info["width"], info["height"])
+    np.savetxt(path, a, delimiter=",", fmt="%.6g")
+    return path
 
 
 def load_dets(seq, path=None):
@@ -138,9 +147,11 @@ def ct_track(build):
     return os.path.join(build, "tools", "ct-track")
 
 
-def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True, det=None):
+def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True, det=None,
+               stdin=None, env=None):
     """ct-track over a sequence: its detections (or det), its frames when
-    pixels; returns the wall time in seconds."""
+    pixels (y4m "-": from stdin, a pipe), with env added to the environment;
+    returns the wall time in seconds."""
     cmd = [ct_track(build), "-q", "-o", out]
     if detections:
         cmd += ["-d", det or os.path.join(DATA, seq, "det", "det.txt")]
@@ -151,7 +162,7 @@ def run_ctrack(build, seq, info, y4m, out, pixels, params=(), detections=True, d
     else:
         cmd += ["-s", "%dx%d" % (info["width"], info["height"]), "-r", str(info["fps"])]
     t0 = time.perf_counter()
-    subprocess.run(cmd, check=True)
+    subprocess.run(cmd, check=True, stdin=stdin, env=dict(os.environ, **env) if env else None)
     return time.perf_counter() - t0
 
 

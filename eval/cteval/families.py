@@ -7,18 +7,14 @@ import concurrent.futures
 import os
 import subprocess
 
-import numpy as np
-
-from .data import DATA, ct_track, seqinfo, video
+from .data import CONDITIONS, moved_boxes, run_ctrack, seqinfo, video
 from .score import score
 
-
-def half(b, w, h):
-    return (b[0] / 2, b[1] / 2, b[2] / 2, b[3] / 2)
+half = CONDITIONS["half size"][1]
 
 
 def half_mirrored(b, w, h):
-    return ((w - b[0] - b[2]) / 2, b[1] / 2, b[2] / 2, b[3] / 2)
+    return half(CONDITIONS["mirrored"][1](b, w, h), w, h)
 
 
 # Each family: (label, ffmpeg filter, what it does to a box or None) per
@@ -47,35 +43,18 @@ FAMILIES = {
 }
 
 
-def moved(seq, kind, move, path):
-    """The sequence's ground truth or detections (kind "gt" or "det") with
-    their boxes moved as the filter moves them (written to path), or as
-    they are."""
-    src = os.path.join(DATA, seq, kind, kind + ".txt")
-    if move is None:
-        return src
-    info = seqinfo(seq)
-    a = np.loadtxt(src, delimiter=",", ndmin=2)
-    for row in a:
-        row[2:6] = move(row[2:6], info["width"], info["height"])
-    np.savetxt(path, a, delimiter=",", fmt="%.6g")
-    return path
-
-
 def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()):
     """ct-track over the sequence's frames through the filter, piped from
     ffmpeg (nothing but the tracks is written), with its detections if
     asked; returns py-motmetrics' scores (cteval.score)."""
-    info = seqinfo(seq)
-    args = ["-d", moved(seq, "det", move, out + ".det")] if detections else []
-    for p in params:
-        args += ["-p", p]
     ff = subprocess.Popen(["ffmpeg", "-v", "error", "-i", video(seq), "-vf", vf,
                            "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
                           stdout=subprocess.PIPE)
     try:
-        subprocess.run([ct_track(build), "-q", "-o", out] + args + ["-r", str(info["fps"]), "-"],
-                       stdin=ff.stdout, env=dict(os.environ, **(env or {})), check=True)
+        run_ctrack(build, seq, seqinfo(seq), "-", out, pixels=True, params=params,
+                   detections=detections,
+                   det=moved_boxes(seq, "det", move, out + ".det") if detections else None,
+                   stdin=ff.stdout, env=env)
     finally:
         # A ct-track that failed leaves ffmpeg writing to a closed pipe:
         # its error is the one to report.
@@ -83,7 +62,7 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
         status = ff.wait()
     if status != 0:
         raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
-    return score(moved(seq, "gt", move, out + ".gt"), out)
+    return score(moved_boxes(seq, "gt", move, out + ".gt"), out)
 
 
 def run_all(jobs, tmp, workers=2, progress=None):

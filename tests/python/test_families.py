@@ -5,7 +5,8 @@ import os
 
 import pytest
 
-from cteval.families import FAMILIES, half_mirrored, moved, run_variant
+from cteval.data import moved_boxes
+from cteval.families import FAMILIES, half_mirrored, run_variant
 
 from conftest import TOP
 
@@ -17,7 +18,7 @@ def test_boxes_move_with_the_frames(tmp_path):
     # TUD-Campus is 640 x 480: a box at (100, 50), 40 x 120, at half size
     # and mirrored is at ((640 - 100 - 40) / 2, 25), 20 x 60.
     assert half_mirrored((100, 50, 40, 120), 640, 480) == (250, 25, 20, 60)
-    path = moved("TUD-Campus", "gt", half_mirrored, str(tmp_path / "gt.txt"))
+    path = moved_boxes("TUD-Campus", "gt", half_mirrored, str(tmp_path / "gt.txt"))
     with open(path) as f:
         first = [float(v) for v in f.readline().split(",")]
     with open(os.path.join(os.path.dirname(__file__), "..", "data", "mot15", "TUD-Campus",
