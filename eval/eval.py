@@ -514,7 +514,8 @@ first; and half size as it is, mirrored, a little brighter or darker, with
 less contrast and with a little noise. Each cell is the mean over the
 family's variants (how many in brackets) and, in brackets, the lowest
 MOTA / IDF1 among them. The background model's constants for noise,
-contrast and black level were chosen on these means (docs/tuning.md).
+contrast and black level, and the size model's, were chosen on these
+means (docs/tuning.md).
 
 """
 

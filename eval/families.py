@@ -7,7 +7,8 @@ pattern or one contrast.
     families.py TUNING_BUILD FAMILY CTRACK_NAME=V1,V2,...@SHIPPED [--jobs 2]
                 [--each] [--detections] [-p NAME=VALUE ...]
 
-FAMILY is one of cteval.families.FAMILIES ("half size" needs its quotes). A
+FAMILY is one of cteval.families.FAMILIES ("half size" needs its quotes), or
+"conditions": the frames as they are and make eval's camera conditions. A
 tuning build (meson -Dtuning=true) reads CTRACK_NAME from the environment.
 Pixels only, or with --detections each sequence's public detections too
 (moved with the frames); -p passes ct-track a parameter (-p
@@ -24,13 +25,13 @@ import tempfile
 import numpy as np
 
 from cteval.data import has_video, sequences
-from cteval.families import FAMILIES, run_all
+from cteval.families import CONDITIONS_FAMILY, FAMILIES, run_all
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
-    ap.add_argument("family", choices=sorted(FAMILIES))
+    ap.add_argument("family", choices=sorted(FAMILIES) + ["conditions"])
     ap.add_argument("sweep", help="CTRACK_NAME=V1,V2,...@SHIPPED")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--each", action="store_true", help="also print every variant's score")
@@ -43,7 +44,7 @@ def main():
     if shipped is not None and shipped not in values:
         values.append(shipped)
     seqs = [s for s in sequences() if has_video(s)]
-    variants = FAMILIES[a.family]
+    variants = CONDITIONS_FAMILY if a.family == "conditions" else FAMILIES[a.family]
     keys = [(seq, label, v) for v in values for seq in seqs for label, _, _ in variants]
     jobs = [dict(build=a.build, seq=seq, vf=vf, move=move, env={name: v},
                  detections=a.detections, params=a.params)

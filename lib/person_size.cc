@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tunable.h"
+
 namespace ctrack {
 
 namespace {
@@ -16,8 +18,10 @@ constexpr double kLowestAspect = 0.1, kAspectStep = 1.0580;
 // this many in all.
 constexpr uint32_t kMinBand = 5, kMinSamples = 20;
 // The width a person is given: the width three people in four stay under, so
-// that a group is split into no more people than it holds.
-constexpr double kWidthQuantile = 0.75;
+// that a group is split into no more people than it holds (docs/tuning.md,
+// "Pixels only: the size model's constants": the median splits
+// TUD-Campus's groups into too many).
+CT_TUNABLE(kWidthQuantile, "CTRACK_WIDTH_QUANTILE", 0.75);
 // A band's counts are halved past this, so that the model keeps learning.
 constexpr uint32_t kMaxBand = 1000;
 // A band weighs at most this many samples in the fit.

@@ -42,6 +42,12 @@ FAMILIES = {
                                           (", noise 4", ",noise=alls=4:allf=t", half))],
 }
 
+# Not a family of make eval's (it reports these runs one by one, "Camera
+# conditions"), but one to sweep over: the frames as they are and in each
+# of make eval's camera conditions.
+CONDITIONS_FAMILY = [("as it is", "null", None)] + [(name, vf, move)
+                                                     for name, (vf, move) in CONDITIONS.items()]
+
 
 def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()):
     """ct-track over the sequence's frames through the filter, piped from
