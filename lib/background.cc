@@ -413,15 +413,22 @@ void sum_of_four(const uint32_t *a, const uint32_t *b, const uint32_t *c, const 
         out[v] = a[v] + b[v] + c[v] + d[v];
 }
 
-double median_of(const uint32_t *hist, uint32_t n)
+// The q-quantile of a histogram of n counts over 256 levels: the first level
+// at which the counts up to it reach q n (255 if none does).
+double quantile_of(const uint32_t *hist, uint32_t n, double q)
 {
     uint32_t below = 0;
     for (int v = 0; v < 256; v++) {
-        if (2 * (below + hist[v]) >= n)
-            return v;
         below += hist[v];
+        if (below >= q * n)
+            return v;
     }
     return 255;
+}
+
+double median_of(const uint32_t *hist, uint32_t n)
+{
+    return quantile_of(hist, n, 0.5);
 }
 
 // How fast the estimates follow the frames, in seconds.
@@ -450,11 +457,7 @@ void NoiseLevel::end(const NoiseSamples &s, double dt)
         for (int v = 0; v < 256; v++)
             deviation[std::abs(v - median)] += m[v];
         contrast += rate * (median_of(deviation, s.m_n) - contrast);
-        uint32_t below = 0;
-        int v = 0;
-        while (v < 255 && (below += m[v]) < kDarkPercentile * s.m_n)
-            v++;
-        dark += rate * (v - dark);
+        dark += rate * (quantile_of(m, s.m_n, kDarkPercentile) - dark);
     }
     known_ = true;
 }
