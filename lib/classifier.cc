@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "tunable.h"
 
 namespace ctrack {
 
@@ -159,7 +162,24 @@ const char *region_name(int r)
 
 const ClassifierParams &default_params()
 {
+#ifdef CT_TUNING
+    // A tuning build reads each threshold from CTRACK_REGION_<g> and the
+    // vetoes from CTRACK_MAX_FILL and CTRACK_MAX_TOP (docs/tuning.md).
+    static const ClassifierParams tuned = [] {
+        ClassifierParams p = kDefaultParams;
+        char name[32];
+        for (int g = 0; g < kRegions; g++) {
+            std::snprintf(name, sizeof name, "CTRACK_REGION_%d", g);
+            p.region[g] = (float)tunable(name, p.region[g]);
+        }
+        p.veto.max_fill = (float)tunable("CTRACK_MAX_FILL", p.veto.max_fill);
+        p.veto.max_top_width = (float)tunable("CTRACK_MAX_TOP", p.veto.max_top_width);
+        return p;
+    }();
+    return tuned;
+#else
     return kDefaultParams;
+#endif
 }
 
 float top_width(const Profile &p)

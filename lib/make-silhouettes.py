@@ -6,10 +6,13 @@
     make-silhouettes.py --check lib/silhouettes.inc
 
 The body (in body heights, x centred): a head (ellipse), a neck, a torso (a
-trapezoid from the shoulders to the hips), two arms and two legs (capsules)
-swinging with the gait phase. Three viewpoints (front, three-quarter, side)
-change the widths and how far the limbs spread sideways; eight gait phases
-and two arm swings make 48 silhouettes. Each is rendered on a fine grid, cut
+trapezoid from the shoulders to the hips), two arms (capsules) and two legs,
+each a thigh and a shin, swinging with the gait phase; the swinging leg's
+knee bends, so a stride's phases differ from their mirror images. Three
+viewpoints (front, three-quarter, side) change the widths and how far the
+limbs spread sideways; the three-quarter and side views walk right and left,
+and the front view shows the walk as the swinging foot raised. Eight gait
+phases of each make 40 silhouettes. Each is rendered on a fine grid, cut
 to its bounding box, and kept as its outer profile: for each of 64 rows, the
 leftmost and rightmost body point, from the box's centre in box heights (so a
 shape keeps its proportions: a box with a person's aspect is not a person).
@@ -30,8 +33,10 @@ VIEWS = {  # shoulder half-width, hip half-width, leg spread sideways, limbs for
     "side": (0.07, 0.075, 0.0, 1.0),
 }
 PHASES = 8
-ARM_SWINGS = (0.35, 0.6)  # radians at the phase's peak
-LEG_SWING = 0.42
+ARM_SWING = 0.45  # radians at the phase's peak
+LEG_SWING = 0.42  # the thigh's, likewise
+KNEE_BEND = 0.7  # radians, at mid-swing
+THIGH = SHIN = 0.235
 
 
 def capsule(xx, yy, x0, y0, x1, y1, r):
@@ -40,7 +45,12 @@ def capsule(xx, yy, x0, y0, x1, y1, r):
     return (xx - (x0 + t * dx)) ** 2 + (yy - (y0 + t * dy)) ** 2 <= r * r
 
 
-def render(view, phase, arm_swing):
+def render(view, phase, facing):
+    """The body at gait phase `phase` of PHASES, facing right (1) or left
+    (-1) in the views that show the walk. Each leg is a thigh and a shin;
+    the swinging leg's knee bends (most at mid-swing), so that phases k and
+    PHASES/2 - k, mirror images of each other for straight legs, differ. In
+    the front view the walk shows as the swinging foot raised."""
     sw, hw, spread, forward = VIEWS[view]
     ys = np.linspace(0, 1, 400)
     xs = np.linspace(-0.5, 0.5, 400)
@@ -49,21 +59,27 @@ def render(view, phase, arm_swing):
     body |= (np.abs(xx) <= 0.028) & (yy >= 0.11) & (yy <= 0.16)  # neck
     t = np.clip((yy - 0.15) / (0.52 - 0.15), 0, 1)
     body |= (yy >= 0.15) & (yy <= 0.53) & (np.abs(xx) <= sw + (hw - sw) * t)  # torso
-    s = math.sin(2 * math.pi * phase / PHASES)
+    phi = 2 * math.pi * phase / PHASES
     for side in (-1, 1):
-        # Arms hang from the shoulders and swing: forward/back in the side
-        # view (seen as sideways motion in the image), slightly out in front.
-        a = side * arm_swing * s * forward
+        # Arms swing against the legs: forward/back (z) seen through the
+        # view's `forward`, slightly out in front.
+        a = side * ARM_SWING * math.sin(phi)
         ax0 = side * (sw - 0.02)
-        ax1 = ax0 + 0.36 * math.sin(a) + side * 0.03 * (1 - forward)
+        ax1 = ax0 + facing * forward * 0.36 * math.sin(a) + side * 0.03 * (1 - forward)
         ay1 = 0.17 + 0.36 * math.cos(a)
         body |= capsule(xx, yy, ax0, 0.17, ax1, ay1, 0.035)
-        # Legs swing in opposition.
-        g = -side * LEG_SWING * s * forward
+        # Legs: this leg's phase; its thigh swings forward and back (z), its
+        # knee bends while the leg swings forward (cos > 0).
+        p = phi + (0 if side > 0 else math.pi)
+        g = LEG_SWING * math.sin(p)
+        flex = KNEE_BEND * max(0.0, math.cos(p)) ** 2
+        kz, ky = THIGH * math.sin(g), 0.52 + THIGH * math.cos(g)
+        fz, fy = kz + SHIN * math.sin(g - flex), ky + SHIN * math.cos(g - flex)
         lx0 = side * max(0.045 - 0.03 * forward, 0.02)
-        lx1 = lx0 + 0.47 * math.sin(g) + side * spread
-        ly1 = 0.52 + 0.47 * math.cos(g)
-        body |= capsule(xx, yy, lx0, 0.52, lx1, ly1, 0.05)
+        kx = lx0 + facing * forward * kz + side * spread / 2
+        fx = lx0 + facing * forward * fz + side * spread
+        body |= capsule(xx, yy, lx0, 0.52, kx, ky, 0.05)
+        body |= capsule(xx, yy, kx, ky, fx, fy, 0.045)
     return body, xs, ys
 
 
@@ -110,11 +126,15 @@ def library():
     """The silhouettes: (name, profile, aspect, outline) for each."""
     out = []
     for view in VIEWS:
-        for swing in ARM_SWINGS:
+        # The front view walks towards the camera: facing left or right
+        # means nothing there.
+        for facing in ((1,) if view == "front" else (1, -1)):
             for phase in range(PHASES):
-                body, xs, ys = render(view, phase, swing)
+                body, xs, ys = render(view, phase, facing)
                 p, aspect = profile(body, xs, ys)
-                name = "%s, arm swing %.2f, phase %d/%d" % (view, swing, phase, PHASES)
+                name = "%s%s, phase %d/%d" % (
+                    view, "" if view == "front" else ", facing " + ("right" if facing > 0 else "left"),
+                    phase, PHASES)
                 out.append((name, p, aspect, contour_points(body, xs, ys)))
     return out
 
@@ -203,15 +223,16 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(3, 16, figsize=(16, 4.2))
+        fig, axes = plt.subplots(5, 8, figsize=(9, 7.5))
         for ax, (name, p, _, _) in zip(axes.flat, sils):
             rows = np.arange(ROWS)
             ax.fill_betweenx(rows, p[:, 0], p[:, 1], color="black")
             ax.set_xlim(-0.35, 0.35)
             ax.set_ylim(ROWS, 0)
             ax.axis("off")
-        fig.suptitle("The contour template's silhouettes (lib/make-silhouettes.py): "
-                     "front, three-quarter and side views, two arm swings, eight gait phases")
+        fig.suptitle("The contour template's silhouettes (lib/make-silhouettes.py), as\n"
+                     "profiles: front; three-quarter, walking right, then left; side, "
+                     "likewise; eight gait phases a row")
         fig.tight_layout()
         fig.savefig(a.png, dpi=80)
     return 0

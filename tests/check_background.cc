@@ -941,11 +941,13 @@ START_TEST(real_blobs_are_classified)
 }
 END_TEST
 
-// classify() compares each distinct silhouette once: the library repeats
-// many, cell for cell (the frontal view's, gait phases k and 4 - k).
+// classify() compares each distinct silhouette once: the library repeats a
+// few, cell for cell (seen from the front, a phase and its mirror image
+// four phases on; at the widest stride, walking right or left), and varies
+// otherwise (34 of its 40 differ; the library before 0.9.0 had 18 of 48).
 START_TEST(repeated_silhouettes_are_compared_once)
 {
-    ck_assert_int_gt(distinct_silhouettes(), 10);
+    ck_assert_int_ge(distinct_silhouettes(), 30);
     ck_assert_int_lt(distinct_silhouettes(), library_silhouettes());
 }
 END_TEST

@@ -83,11 +83,14 @@ ffmpeg -v error -i "$data/TUD-Campus/video.mp4" -f yuv4mpegpipe -pix_fmt yuv420p
 check "TUD-Campus, detections + pixels" TUD-Campus 75.5 80.5 DETS "$tmp/tud.y4m"
 pets=$("$here/../scripts/fetch-pets09.sh")
 check "PETS09-S2L1, detections + pixels" PETS09-S2L1 70.0 75.0 DETS "$pets"
-check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 70.0 72.5 \
+check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 71.0 80.0 \
     DETS -p verify_detections=1 "$pets"
 # From the pixels alone (docs/notes/pixels.md): no detections.
-check "PETS09-S2L1, pixels only" PETS09-S2L1 69.0 78.0 -r 7 "$pets"
-check "TUD-Campus, pixels only" TUD-Campus 31.0 51.0 -r 25 "$tmp/tud.y4m"
+# TUD-Campus's IDF1 fell from 51.5 to 49.4 with the silhouettes' variety
+# (0.9.0), while its condition families rose (docs/tuning.md, "Pixels only:
+# the contour template's thresholds").
+check "PETS09-S2L1, pixels only" PETS09-S2L1 71.5 78.0 -r 7 "$pets"
+check "TUD-Campus, pixels only" TUD-Campus 32.0 49.0 -r 25 "$tmp/tud.y4m"
 # People half as tall (PETS09-S2L1 at 384x288, about 40 pixels): the pixels
 # are read at every pixel once the people's size is known (docs/notes/
 # pixels.md, "The working scale"); at every other one, 60.2 / 71.0.
@@ -103,12 +106,12 @@ PY
 "$ct_track" -q -o "$tmp/half-tracks.txt" -r 7 "$tmp/half.y4m"
 printf 'PETS09-S2L1 at half size, pixels only: '
 "$py" -m cteval.score "$tmp/half-gt.txt" "$tmp/half-tracks.txt" \
-    --min-mota 68.0 --min-idf1 76.5 || fail=1
+    --min-mota 68.0 --min-idf1 77.0 || fail=1
 # Washed out, as in haze (contrast 0.55, the black level raised by 0.1):
 # the background's shadow test reads ratios above the scene's black level
 # and its floor follows the contrast (docs/notes/pixels.md, "Contrast and
 # black level"); with both taken from 0 and fixed, 39.1 / 47.9.
 ffmpeg -v error -i "$pets" -vf eq=contrast=0.55:brightness=0.1 -f yuv4mpegpipe -pix_fmt yuv420p \
     "$tmp/hazy.y4m"
-check "PETS09-S2L1 washed out, pixels only" PETS09-S2L1 69.0 72.5 -r 7 "$tmp/hazy.y4m"
+check "PETS09-S2L1 washed out, pixels only" PETS09-S2L1 72.0 74.0 -r 7 "$tmp/hazy.y4m"
 exit $fail

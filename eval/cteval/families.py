@@ -42,6 +42,27 @@ FAMILIES = {
                                           (", noise 4", ",noise=alls=4:allf=t", half))],
 }
 
+
+def scaled(f, mirrored=False):
+    """A box of frames scaled by f (after a mirror image when asked)."""
+    def move(b, w, h):
+        x = w - b[0] - b[2] if mirrored else b[0]
+        return (x * f, b[1] * f, b[2] * f, b[3] * f)
+    return move
+
+
+# Conditions that no default is chosen on: eval/vote.py reports its choice
+# over them beside the shipped one's, as a check of how it transfers.
+HELD_OUT_FAMILY = [
+    ("three quarters size", "scale=trunc(iw*0.375)*2:trunc(ih*0.375)*2", scaled(0.75)),
+    ("0.625 size, mirrored", "hflip,scale=trunc(iw*0.3125)*2:trunc(ih*0.3125)*2",
+     scaled(0.625, True)),
+    ("gamma 1.5", "eq=gamma=1.5", None),
+    ("blurred (sigma 1.2)", "gblur=sigma=1.2", None),
+    ("hue +30, saturation 0.4", "hue=h=30:s=0.4", None),
+    ("darker by 0.06, noise 10", "eq=brightness=-0.06,noise=alls=10:allf=t:all_seed=7", None),
+]
+
 # Not a family of make eval's (it reports these runs one by one, "Camera
 # conditions"), but one to sweep over: the frames as they are and in each
 # of make eval's camera conditions.
