@@ -42,13 +42,12 @@ With --report it rewrites docs/notes/recognition.md.
 import argparse
 import datetime
 import os
-import re
 import subprocess
 import sys
 
 import numpy as np
 
-from cteval.data import DATA, TOP, ct_track, seqinfo, video
+from cteval.data import DATA, TOP, classifier_params, ct_track, seqinfo, video
 REGIONS = ["head", "neck", "shoulders", "chest", "back", "abdomen", "buttocks",
            "upper limbs", "lower limbs"]
 
@@ -331,19 +330,12 @@ def picture_of_shape_rejections(build, sets, rejected, column, path, n=24):
     return write_sheet(tiles, 12, path)
 
 
-PARAMS = os.path.join(TOP, "lib", "classifier_params.inc")
-
-
 def shipped_params():
     """The classifier's parameters the library is built with
     (lib/classifier_params.inc): the regions' thresholds, the largest fill
     of the convex hull and the widest top against the body (all chosen by
     tracking, eval/vote.py)."""
-    text = open(PARAMS).read()
-    body = text[text.index("kDefaultParams"):]
-    values = [float(t) for t in re.findall(r"([0-9.]+)f", body)]
-    if len(values) != len(REGIONS) + 2:
-        sys.exit("recognition: %s has %d values, not %d" % (PARAMS, len(values), len(REGIONS) + 2))
+    values = classifier_params()
     return np.array(values[:len(REGIONS)]), values[-2], values[-1]
 
 

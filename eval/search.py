@@ -23,7 +23,7 @@ import tempfile
 
 import motmetrics as mm
 
-from cteval.data import DATA, ct_track, seqinfo, sequences, video
+from cteval.data import DATA, PIXEL_FLOORS, ct_track, seqinfo, sequences, video
 
 # (MOTA, IDF1) floors, as tests/replay.sh checks them.
 FLOORS = {"PETS09-S2L1": (68.0, 68.5), "TUD-Campus": (74.0, 81.0),
@@ -31,8 +31,8 @@ FLOORS = {"PETS09-S2L1": (68.0, 68.5), "TUD-Campus": (74.0, 81.0),
           "KITTI-13": (27.0, 49.0), "Venice-2": (20.0, 43.5)}
 MODE_FLOORS = {("PETS09-S2L1", "detections + pixels"): (70.0, 75.0),
                ("TUD-Campus", "detections + pixels"): (75.5, 80.5),
-               ("PETS09-S2L1", "pixels"): (71.5, 78.0),
-               ("TUD-Campus", "pixels"): (32.0, 49.0)}
+               ("PETS09-S2L1", "pixels"): PIXEL_FLOORS["PETS09-S2L1"],
+               ("TUD-Campus", "pixels"): PIXEL_FLOORS["TUD-Campus"]}
 
 BUILD = None
 _GT = {}

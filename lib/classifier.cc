@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "tunable.h"
+#ifdef CT_TUNING
+#include <cstdio>
+#endif
 
 namespace ctrack {
 

@@ -2,6 +2,7 @@
 Y4M and cached, and ct-track runs over them."""
 import configparser
 import os
+import re
 import subprocess
 import time
 
@@ -11,6 +12,24 @@ from .y4m import open_y4m
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DATA = os.path.join(TOP, "tests", "data", "mot15")
+CLASSIFIER_PARAMS = os.path.join(TOP, "lib", "classifier_params.inc")
+# (MOTA, IDF1) floors of the single runs from the pixels alone, as
+# tests/replay.sh checks them.
+PIXEL_FLOORS = {"PETS09-S2L1": (71.5, 78.0), "PETS09-S2L1 at half size": (68.0, 77.0),
+                "TUD-Campus": (32.0, 49.0)}
+
+
+def classifier_params():
+    """The contour template's eleven values in lib/classifier_params.inc, in
+    order: the nine regions' thresholds (head, neck, shoulders, chest, back,
+    abdomen, buttocks, upper limbs, lower limbs), the largest part of its
+    convex hull a pedestrian's blob fills, the widest top against the body."""
+    with open(CLASSIFIER_PARAMS) as f:
+        text = f.read()
+    values = [float(v) for v in re.findall(r"([0-9.]+)f", text[text.index("kDefaultParams"):])]
+    if len(values) != 11:
+        raise SystemExit("%s has %d values, not 11" % (CLASSIFIER_PARAMS, len(values)))
+    return values
 SCRIPTS = os.path.join(TOP, "scripts")
 
 

@@ -13,8 +13,18 @@ from .score import score
 half = CONDITIONS["half size"][1]
 
 
-def half_mirrored(b, w, h):
-    return half(CONDITIONS["mirrored"][1](b, w, h), w, h)
+def scaled(f, mirrored=False):
+    """A box of frames scaled by f (after make eval's mirror image when
+    asked)."""
+    mirror = CONDITIONS["mirrored"][1]
+
+    def move(b, w, h):
+        x, y, bw, bh = mirror(b, w, h) if mirrored else b[:4]
+        return (x * f, y * f, bw * f, bh * f)
+    return move
+
+
+half_mirrored = scaled(0.5, mirrored=True)
 
 
 # Each family: (label, ffmpeg filter, what it does to a box or None) per
@@ -41,14 +51,6 @@ FAMILIES = {
                                           (", contrast 0.9", ",eq=contrast=0.9", half),
                                           (", noise 4", ",noise=alls=4:allf=t", half))],
 }
-
-
-def scaled(f, mirrored=False):
-    """A box of frames scaled by f (after a mirror image when asked)."""
-    def move(b, w, h):
-        x = w - b[0] - b[2] if mirrored else b[0]
-        return (x * f, b[1] * f, b[2] * f, b[3] * f)
-    return move
 
 
 # Conditions that no default is chosen on: eval/vote.py reports its choice
