@@ -18,7 +18,7 @@ import tempfile
 import numpy as np
 
 from cteval import peers
-from cteval.data import (CONDITIONS, DATA, TOP, cache_dir, conditioned, ctrack_version,
+from cteval.data import (CONDITIONS, DATA, TOP, conditioned, ctrack_version,
                          has_video, load_dets, run_ctrack, seqinfo, sequences, subsampled, video,
                          write_rows)
 from cteval.families import FAMILIES, run_all
@@ -511,7 +511,10 @@ families of variants (`eval/cteval/families.py`): sensor noise of three
 strengths with two seeds each; contrast from 0.4 to 1 with the black level
 lowered or raised (haze, a washed-out picture), the frames as they are
 first; and half size as it is, mirrored, a little brighter or darker, with
-less contrast and with a little noise. Each cell is the mean over the
+less contrast and with a little noise; and the frames cut by 4 pixels at
+eight offsets, the same picture with each pixel in another place of the
+working scale's blocks (its spread is the tracker's luck, not the
+camera's). Each cell is the mean over the
 family's variants (how many in brackets) and, in brackets, the lowest
 MOTA / IDF1 among them. The background model's constants for noise,
 contrast and black level, and the size model's, were chosen on these

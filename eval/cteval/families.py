@@ -7,7 +7,7 @@ import concurrent.futures
 import os
 import subprocess
 
-from .data import CONDITIONS, moved_boxes, run_ctrack, seqinfo, video
+from .data import CONDITIONS, moved_boxes, run_ctrack, seqinfo, subsampled, video
 from .score import score
 
 half = CONDITIONS["half size"][1]
@@ -25,6 +25,11 @@ def scaled(f, mirrored=False):
 
 
 half_mirrored = scaled(0.5, mirrored=True)
+
+
+def shifted(dx, dy):
+    """A box of frames whose first dx columns and dy rows were cut off."""
+    return lambda b, w, h: (b[0] - dx, b[1] - dy, b[2], b[3])
 
 
 # Each family: (label, ffmpeg filter, what it does to a box or None) per
@@ -50,6 +55,12 @@ FAMILIES = {
                                           (", brightness -0.04", ",eq=brightness=-0.04", half),
                                           (", contrast 0.9", ",eq=contrast=0.9", half),
                                           (", noise 4", ",noise=alls=4:allf=t", half))],
+    # The same camera a few pixels off: the frames cut by 4 pixels in each
+    # direction, at eight offsets (the first is the top left corner). The
+    # picture is the same; what moves is where each pixel falls in the
+    # working scale's blocks, so the spread is the tracker's luck.
+    "shift": [("cut at %d, %d" % (dx, dy), "crop=iw-4:ih-4:%d:%d" % (dx, dy), shifted(dx, dy))
+              for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1), (2, 2), (3, 1), (1, 3), (4, 4))],
 }
 
 
@@ -72,17 +83,45 @@ CONDITIONS_FAMILY = [("as it is", "null", None)] + [(name, vf, move)
                                                      for name, (vf, move) in CONDITIONS.items()]
 
 
+class Every:
+    """Not a move of boxes but of frames: every k-th frame kept, from frame
+    offset + 1 (the filter of such a variant is every(k, offset))."""
+
+    def __init__(self, k, offset):
+        self.k, self.offset = k, offset
+
+
+def every(k, offset):
+    """The ffmpeg filter keeping frames offset + 1, offset + 1 + k, ..."""
+    return "trim=start_frame=%d,setpts=PTS-STARTPTS,framestep=%d" % (offset, k)
+
+
+# A camera that keeps every k-th frame: a half and a third of the frame
+# rate, from each offset (make eval reports these runs one by one, "At
+# lower frame rates"); eval/vote.py chooses over it.
+RATE_FAMILY = [("1/%d of the frame rate, from frame %d" % (k, o + 1), every(k, o), Every(k, o))
+               for k in (2, 3) for o in range(k)]
+
+
 def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()):
     """ct-track over the sequence's frames through the filter, piped from
     ffmpeg (nothing but the tracks is written), with its detections if
-    asked; returns py-motmetrics' scores (cteval.score)."""
+    asked; returns py-motmetrics' scores (cteval.score). A move that is an
+    Every keeps the ground truth's and detections' frames that the filter
+    keeps."""
+    info = seqinfo(seq)
+    if isinstance(move, Every):
+        os.makedirs(out + ".d", exist_ok=True)
+        _, gt, det, info = subsampled(seq, info, None, move.k, move.offset, out + ".d")
+    else:
+        gt = moved_boxes(seq, "gt", move, out + ".gt")
+        det = moved_boxes(seq, "det", move, out + ".det") if detections else None
     ff = subprocess.Popen(["ffmpeg", "-v", "error", "-i", video(seq), "-vf", vf,
                            "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
                           stdout=subprocess.PIPE)
     try:
-        run_ctrack(build, seq, seqinfo(seq), "-", out, pixels=True, params=params,
-                   detections=detections,
-                   det=moved_boxes(seq, "det", move, out + ".det") if detections else None,
+        run_ctrack(build, seq, info, "-", out, pixels=True, params=params,
+                   detections=detections, det=det if detections else None,
                    stdin=ff.stdout, env=env)
     finally:
         # A ct-track that failed leaves ffmpeg writing to a closed pipe:
@@ -91,7 +130,7 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
         status = ff.wait()
     if status != 0:
         raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
-    return score(moved_boxes(seq, "gt", move, out + ".gt"), out)
+    return score(gt, out)
 
 
 def run_all(jobs, tmp, workers=2, progress=None):

@@ -51,10 +51,13 @@ def test_the_library_varies():
     """Each view changes with the gait phase; a stride's phases k and 4 - k,
     mirror images of each other for straight legs, differ (the swinging
     knee bends); walking right and left differ; each by a twentieth of the box
-    somewhere. Without the knee, or with the frontal view standing still,
-    this fails."""
+    somewhere; a heavy and a slim build differ from the average in the
+    torso's width, and a bag changes the outline beside or behind the body (by
+a thirtieth of the box somewhere).
+    Without the knee, with the frontal view standing still, or with every
+    build or bag drawn as the average, this fails."""
     gen = generator()
-    library = gen.library()
+    library = gen.library(("bag", "heavy", "slim"))
     sils = {name: p for name, p, _, _ in library}
 
     def apart(a, b):
@@ -72,4 +75,15 @@ def test_the_library_varies():
     for view in ("three-quarter", "side"):
         assert apart("%s, facing right, phase 1/8" % view,
                      "%s, facing left, phase 1/8" % view) > 0.05, view
-    assert gen.distinct(library) >= 28
+    torso = slice(16, 36)  # the profile's rows from the chest to the hips
+    for view in ("front", "three-quarter, facing left", "side, facing right"):
+        average = sils["%s, phase 2/8" % view][torso]
+        for build in ("heavy", "slim"):
+            other = sils["%s, phase 2/8, %s" % (view, build)][torso]
+            wider = (other[:, 1] - other[:, 0]).mean() - (average[:, 1] - average[:, 0]).mean()
+            assert (wider > 0.02) if build == "heavy" else (wider < -0.005), (view, build, wider)
+    for name in ("front, phase 3/8, shoulder bag", "side, facing left, phase 1/8, backpack",
+                 "three-quarter, facing right, phase 3/8, in hand",
+                 "three-quarter, facing left, phase 1/8, backpack"):
+        assert apart(name, name.rsplit(", ", 1)[0]) > 0.03, name
+    assert gen.distinct(gen.library()) >= 28
