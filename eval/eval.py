@@ -21,7 +21,7 @@ from cteval import peers
 from cteval.data import (CONDITIONS, DATA, TOP, conditioned, ctrack_version,
                          has_video, load_dets, run_ctrack, seqinfo, sequences, subsampled, video,
                          write_rows)
-from cteval.families import FAMILIES, run_all
+from cteval.families import FAMILIES, RATE_STEPS, run_all
 from cteval.score import score, score_overall
 
 
@@ -176,8 +176,6 @@ LOWER_RATES = [
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections", None),
     ("sort", "SORT (trackers 2.6.1)", "detections", None),
 ]
-# Keep every k-th frame, for each k here, from every offset.
-LOWER_RATE_STEPS = (2, 3)
 
 
 def lower_rates(build, seqs, tmp):
@@ -194,7 +192,7 @@ def lower_rates(build, seqs, tmp):
         info = seqinfo(seq)
         src = video(seq) if has_video(seq) else None
         trackers = [t for t in LOWER_RATES if src is not None or t[2] == "detections"]
-        for k in LOWER_RATE_STEPS:
+        for k in RATE_STEPS:
             runs = {}
             for offset in range(k):
                 y4m, gt, det, sub = subsampled(seq, info, src, k, offset, tmp)

@@ -12,6 +12,7 @@ from .y4m import open_y4m
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DATA = os.path.join(TOP, "tests", "data", "mot15")
+SCRIPTS = os.path.join(TOP, "scripts")
 CLASSIFIER_PARAMS = os.path.join(TOP, "lib", "classifier_params.inc")
 # (MOTA, IDF1) floors of the single runs from the pixels alone, as
 # tests/replay.sh checks them.
@@ -30,7 +31,6 @@ def classifier_params():
     if len(values) != 11:
         raise SystemExit("%s has %d values, not 11" % (CLASSIFIER_PARAMS, len(values)))
     return values
-SCRIPTS = os.path.join(TOP, "scripts")
 
 
 def seqinfo(seq, data=DATA):

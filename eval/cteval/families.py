@@ -97,10 +97,11 @@ def every(k, offset):
 
 
 # A camera that keeps every k-th frame: a half and a third of the frame
-# rate, from each offset (make eval reports these runs one by one, "At
-# lower frame rates"); eval/vote.py chooses over it.
+# rate (make eval reports these runs one by one, "At lower frame rates"),
+# and as a family from each offset, which eval/vote.py chooses over.
+RATE_STEPS = (2, 3)
 RATE_FAMILY = [("1/%d of the frame rate, from frame %d" % (k, o + 1), every(k, o), Every(k, o))
-               for k in (2, 3) for o in range(k)]
+               for k in RATE_STEPS for o in range(k)]
 
 
 def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()):

@@ -50,12 +50,12 @@ def generator():
 def test_the_library_varies():
     """Each view changes with the gait phase; a stride's phases k and 4 - k,
     mirror images of each other for straight legs, differ (the swinging
-    knee bends); walking right and left differ; each by a twentieth of the box
-    somewhere; a heavy and a slim build differ from the average in the
-    torso's width, and a bag changes the outline beside or behind the body (by
-a thirtieth of the box somewhere).
-    Without the knee, with the frontal view standing still, or with every
-    build or bag drawn as the average, this fails."""
+    knee bends); walking right and left differ; each by a twentieth of the
+    box somewhere; a heavy and a slim build differ from the average in the
+    torso's width, and a bag changes the outline beside or behind the body
+    (by a thirtieth of the box somewhere). Without the knee, with the
+    frontal view standing still, or with every build or bag drawn as the
+    average, this fails."""
     gen = generator()
     library = gen.library(("bag", "heavy", "slim"))
     sils = {name: p for name, p, _, _ in library}
@@ -87,3 +87,13 @@ a thirtieth of the box somewhere).
                  "three-quarter, facing left, phase 1/8, backpack"):
         assert apart(name, name.rsplit(", ", 1)[0]) > 0.03, name
     assert gen.distinct(gen.library()) >= 28
+
+
+def test_an_unknown_variant_is_refused(tmp_path):
+    # A misspelt variant is an error naming those there are, and nothing is
+    # written.
+    out = tmp_path / "silhouettes.inc"
+    r = subprocess.run([sys.executable, MAKE_SILHOUETTES, "--with", "bag,fat", "--out", str(out)],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "no variant fat (there are bag, heavy, slim)" in r.stderr, r.stderr
+    assert not out.exists()
