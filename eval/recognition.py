@@ -551,10 +551,14 @@ The people are the rows the scoring keeps. Balanced accuracy is the mean of
 the true positive and true negative rates. The thresholds were chosen on
 PETS09-S2L1 frames 1-400; frames 401-795 and TUD-Campus are held out. A
 blob is a pedestrian when more than half of the regions that vote say yes,
-it fills no more of its convex hull than a walking person does, and its top
+it fills no more of its convex hull than a walking person does, its top
 is narrower than its body (0.7.0: a person has a head;
-docs/notes/pixels.md); the column "regions alone" leaves both shape tests
-out, the column "without the top's test" the last.
+docs/notes/pixels.md), and no shape a person is not (two walkers side by
+side) fits it better than every silhouette (0.9.0). The column "regions
+alone" leaves the shape tests out, the column "without the top's test"
+keeps the fill's alone; neither weighs the pairs, which need the blob's
+outline (the candidates' file holds its distances to the closest
+silhouette only).
 
 """
 

@@ -131,7 +131,7 @@ constexpr Repeats make_repeats()
         r.of_earlier[s] = false;
         for (int t = 0; t < s && !r.of_earlier[s]; t++)
             r.of_earlier[s] = same_cells(s, t);
-        r.distinct += !r.of_earlier[s];
+        r.distinct += s < kPeople && !r.of_earlier[s];
     }
     return r;
 }
@@ -149,12 +149,17 @@ const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "bac
 
 int library_silhouettes()
 {
-    return kSilhouettes;
+    return kPeople;
 }
 
 int distinct_silhouettes()
 {
     return kRepeats.distinct;
+}
+
+int not_person_shapes()
+{
+    return kSilhouettes - kPeople;
 }
 
 const char *region_name(int r)
@@ -220,7 +225,7 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
         votes[g] = 2 * present >= z.row1 - z.row0;
     }
     Vote best;
-    float best_total = INFINITY;
+    float best_total = INFINITY, not_person = INFINITY;
     const uint16_t *dist = &shape.outline.dist[0][0];
     for (int s = 0; s < kSilhouettes; s++) {
         if (kRepeats.of_earlier[s])
@@ -251,12 +256,18 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
             v.yes += v.distance[g] <= params.region[g];
             total += v.distance[g];
         }
+        const float mean = v.voters ? total / v.voters : INFINITY;
+        // The library's last shapes are no pedestrians (two people side by
+        // side): only how close the closest of them comes counts.
+        if (s >= kPeople) {
+            not_person = std::min(not_person, mean);
+            continue;
+        }
         v.score = v.voters >= kMinVoters ? (float)v.yes / v.voters : 0;
         v.silhouette = s;
         // The closest silhouette (mean distance over the voting regions)
         // speaks for the library, whatever the thresholds: the distances a
         // blob reports do not depend on them.
-        const float mean = v.voters ? total / v.voters : INFINITY;
         if (mean < best_total) {
             best = v;
             best_total = mean;
@@ -264,10 +275,14 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
     }
     // The vetoes overrule the regions: a blob that fills its convex hull,
     // or has no head on top (a T, an H, a Π, an X, a Y, a U; a person under
-    // an open umbrella has a T's outline too), is no pedestrian.
+    // an open umbrella has a T's outline too), is no pedestrian; nor is a
+    // blob that a shape a person is not fits better than every silhouette
+    // (a group that a wide silhouette, three-quarters with legs in stride,
+    // would take for one person).
     best.fill = p.fill;
     best.top = top_width(p);
-    if (best.fill > params.veto.max_fill || best.top > params.veto.max_top_width)
+    if (best.fill > params.veto.max_fill || best.top > params.veto.max_top_width ||
+        not_person < best_total)
         best.score = std::min(best.score, 0.5f);
     return best;
 }

@@ -22,10 +22,13 @@ enum Region {
 };
 
 const char *region_name(int r);
-// How many silhouettes the library has, and how many of them classify()
-// compares (the others repeat one of them, cell for cell).
+// How many pedestrian silhouettes the library has, and how many of them
+// classify() compares (the others repeat one of them, cell for cell); and
+// how many shapes a person is not follow them (two people side by side: a
+// blob closer to one of them than to every silhouette is no pedestrian).
 int library_silhouettes();
 int distinct_silhouettes();
+int not_person_shapes();
 
 // At least this many regions must vote for a score.
 constexpr int kMinVoters = 5;
@@ -63,7 +66,8 @@ struct Vote {
     float distance[kRegions] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
     int yes = 0, voters = 0;
     // yes / voters, 0 with fewer than kMinVoters voters, at most 0.5 (no
-    // pedestrian) when a veto applies.
+    // pedestrian) when a veto applies or a shape a person is not fits the
+    // blob better than every silhouette.
     float score = 0;
     int silhouette = -1;
     float fill = 0; // Profile::fill

@@ -723,6 +723,34 @@ START_TEST(library_silhouettes_are_pedestrians)
 }
 END_TEST
 
+// Two people walking side by side, one blob: the second a fifth of a
+// height to the right of the first (each 30 x 80 pixels; the blob 46 x 80).
+// The silhouettes alone take it for one wide person (most regions vote
+// yes, no veto on fill or top), but one of the library's shapes a person is
+// not, two walkers side by side, fits it better: no pedestrian. One walker
+// alone still is. Without those shapes (make-silhouettes.py
+// --no-not-people), this fails.
+START_TEST(a_pair_is_no_pedestrian)
+{
+    ck_assert_int_gt(not_person_shapes(), 0);
+    const Vote one = classify(shape_of(walking_person, 30, 80), default_params());
+    ck_assert_msg(one.score > 0.5f, "one walker scored %.2f", (double)one.score);
+    const Vote two = classify(shape_of([](double u, double v) {
+        const double x = u * 46;
+        return (x < 30 && walking_person(x / 30, v)) ||
+               (x >= 16 && walking_person((x - 16) / 30, v));
+    }, 46, 80), default_params());
+    const Vetoes &veto = default_params().veto;
+    ck_assert_int_ge(two.voters, kMinVoters);
+    ck_assert_msg(2 * two.yes > two.voters && two.fill <= veto.max_fill &&
+                      two.top <= veto.max_top_width,
+                  "the silhouettes alone do not take the pair for a person: %d of %d yes, "
+                  "fill %.2f, top %.2f", two.yes, two.voters, (double)two.fill,
+                  (double)two.top);
+    ck_assert_msg(two.score <= 0.5f, "a pair scored %.2f", (double)two.score);
+}
+END_TEST
+
 // How much of its convex hull a shape fills: all of a box; three quarters
 // of the box for an L (the left half of the top half and all of the bottom
 // half), whose hull leaves out one eighth of the box.
@@ -993,6 +1021,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, pair_splits_between_heads);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
+    tcase_add_test(tc, a_pair_is_no_pedestrian);
     tcase_add_test(tc, fill_of_the_convex_hull);
     tcase_add_test(tc, wide_topped_non_human_shapes_are_rejected);
     tcase_add_test(tc, hull_filling_non_human_shapes_are_rejected);

@@ -110,8 +110,10 @@ printf 'PETS09-S2L1 at half size, pixels only: '
 # Washed out, as in haze (contrast 0.55, the black level raised by 0.1):
 # the background's shadow test reads ratios above the scene's black level
 # and its floor follows the contrast (docs/notes/pixels.md, "Contrast and
-# black level"); with both taken from 0 and fixed, 39.1 / 47.9.
+# black level"); with both taken from 0 and fixed, 39.1 / 47.9. 72.0 /
+# 74.5 (72.5 / 74.6 before the template weighed pairs of walkers against
+# its silhouettes, docs/notes/pixels.md "Shapes a person is not").
 ffmpeg -v error -i "$pets" -vf eq=contrast=0.55:brightness=0.1 -f yuv4mpegpipe -pix_fmt yuv420p \
     "$tmp/hazy.y4m"
-check "PETS09-S2L1 washed out, pixels only" PETS09-S2L1 72.0 74.0 -r 7 "$tmp/hazy.y4m"
+check "PETS09-S2L1 washed out, pixels only" PETS09-S2L1 71.5 74.0 -r 7 "$tmp/hazy.y4m"
 exit $fail

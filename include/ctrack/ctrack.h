@@ -393,8 +393,9 @@ typedef struct ct_candidate {
     /* The contour template's vote: yes votes over voting regions (0 with
      * fewer than 5 voters; at most 0.5, not a pedestrian, when the blob
      * fills more of its convex hull than a walking person does, see fill,
-     * or its top is as wide as its body, see top_width); candidates feed
-     * the tracker with this score. */
+     * or its top is as wide as its body, see top_width, or two people side
+     * by side fit its outline better than every pedestrian silhouette);
+     * candidates feed the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,

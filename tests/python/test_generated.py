@@ -21,7 +21,7 @@ def check_silhouettes(path):
 def test_silhouettes_match_their_generator():
     r = check_silhouettes(SILHOUETTES)
     assert r.returncode == 0, r.stderr
-    assert "40 silhouettes as generated" in r.stdout
+    assert "40 silhouettes and 15 shapes a person is not as generated" in r.stdout
 
 
 def test_a_changed_silhouette_is_noticed(tmp_path):
@@ -87,6 +87,24 @@ def test_the_library_varies():
                  "three-quarter, facing left, phase 1/8, backpack"):
         assert apart(name, name.rsplit(", ", 1)[0]) > 0.03, name
     assert gen.distinct(gen.library()) >= 28
+
+
+def test_the_shapes_a_person_is_not_are_pairs():
+    """Each shape a person is not is two walkers side by side: wider for its
+    height than every silhouette of its view and way, and wider the farther
+    apart they are. With one walker drawn, or the second on top of the
+    first, this fails."""
+    gen = generator()
+    aspects = {name: aspect for name, _, aspect, _ in gen.library()}
+    pairs = gen.not_people()
+    assert len(pairs) == 15
+    for name, _, aspect, _ in pairs:
+        view = name.split("two ")[1].replace(" walkers", "").rsplit(", ", 1)[0]
+        alike = [a for n, a in aspects.items() if n.rsplit(", phase", 1)[0] == view]
+        assert len(alike) == 8 and aspect < min(alike) - 0.05, (name, aspect, min(alike))
+    for k in range(0, 15, 3):
+        near, middle, far = (a for _, _, a, _ in pairs[k:k + 3])
+        assert near > middle > far, pairs[k][0]
 
 
 def test_an_unknown_variant_is_refused(tmp_path):
