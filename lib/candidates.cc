@@ -15,6 +15,9 @@ namespace {
 // off) has its edges in the model, a real object in the frame. The choice
 // is measured in docs/notes/pixels.md.
 constexpr double kGhostEdges = 2.0;
+// The narrowest blob at the image's left or right edge that is voted on, in
+// working pixels (docs/tuning.md, "A sliver at the edge").
+constexpr int kEdgeMinWidth = 3;
 
 // The working scale from the people's size (docs/notes/pixels.md, "The
 // working scale"): the coarsest of 1, 2 and 4 at which a typical person
@@ -143,6 +146,13 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
             (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
         if (test == CT_PEDESTRIAN_SIZE)
             c.score = person_sized(c, size) ? 1.0f : 0.0f;
+        // A sliver at the image's left or right edge, fewer than
+        // kEdgeMinWidth working pixels wide, has no outline to vote on (its
+        // side is the image's border): no score, so it neither starts nor
+        // continues a track. A background column that stays foreground
+        // there started one (docs/tuning.md, "A sliver at the edge").
+        if ((r.x0 <= 0 || r.x1 >= background_.width()) && r.x1 - r.x0 < kEdgeMinWidth)
+            c.score = 0;
         candidates_.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));

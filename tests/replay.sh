@@ -91,6 +91,18 @@ check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 71.
 # the contour template's thresholds").
 check "PETS09-S2L1, pixels only" PETS09-S2L1 71.5 78.0 -r 7 "$pets"
 check "TUD-Campus, pixels only" TUD-Campus 32.0 49.0 -r 25 "$tmp/tud.y4m"
+# The frames cut by 2 pixels on each side (make eval's shift family): a
+# background column at the right edge stayed foreground, and its blob, 4 x
+# 28 pixels, scored 0.8 and started a track. A blob at the left or right
+# edge narrower than 3 working pixels (6 frame pixels here) gets no score.
+ffmpeg -v error -i "$tmp/tud.y4m" -vf crop=iw-4:ih-4:2:2 -f yuv4mpegpipe -pix_fmt yuv420p \
+    "$tmp/tud-cut.y4m"
+"$ct_track" -q -o "$tmp/cut-tracks.txt" -r 25 --candidates "$tmp/cut-candidates.txt" \
+    "$tmp/tud-cut.y4m"
+slivers=$(awk -F, '!/^#/ && ($2 <= 0 || $2 + $4 >= 636) && $4 < 6 && $6 > 0' \
+    "$tmp/cut-candidates.txt" | wc -l)
+echo "TUD-Campus cut at 2, 2, pixels only: $slivers slivers at the image's edge scored"
+[ "$slivers" -eq 0 ] || fail=1
 # People half as tall (PETS09-S2L1 at 384x288, about 40 pixels): the pixels
 # are read at every pixel once the people's size is known (docs/notes/
 # pixels.md, "The working scale"); at every other one, 60.2 / 71.0.
