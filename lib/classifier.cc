@@ -224,45 +224,37 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
             present += !p.empty(r);
         votes[g] = 2 * present >= z.row1 - z.row0;
     }
-    Vote best;
-    float best_total = INFINITY, not_person = INFINITY;
     const uint16_t *dist = &shape.outline.dist[0][0];
-    for (int s = 0; s < kSilhouettes; s++) {
-        if (kRepeats.of_earlier[s])
-            continue;
-        // Sums of chamfer units, exact in integers.
-        uint32_t sum[kRegions] = {0};
-        int n[kRegions] = {0};
+    // Eq. (1) against library shape s: each voting region's distance, the
+    // votes, and the mean distance over the voters (returned).
+    auto compare = [&](int s, Vote *v) {
+        float total = 0;
         const uint16_t *cell = kRegionCells.cell[s];
         const uint16_t *start = kRegionCells.start[s];
         for (int g = 0; g < kRegions; g++) {
-            if (!votes[g])
+            const int n = start[g + 1] - start[g];
+            if (!votes[g] || n == 0) {
+                v->distance[g] = -1;
                 continue;
+            }
+            // A sum of chamfer units, exact in integers.
             uint32_t acc = 0;
             for (int k = start[g]; k < start[g + 1]; k++)
                 acc += dist[cell[k]];
-            sum[g] = acc;
-            n[g] = start[g + 1] - start[g];
+            v->distance[g] = (float)acc / n * (1.0f / (3 * kGrid)); // box heights
+            v->voters++;
+            v->yes += v->distance[g] <= params.region[g];
+            total += v->distance[g];
         }
-        Vote v;
-        float total = 0;
-        for (int g = 0; g < kRegions; g++) {
-            if (!votes[g] || n[g] == 0) {
-                v.distance[g] = -1;
-                continue;
-            }
-            v.distance[g] = (float)sum[g] / n[g] * (1.0f / (3 * kGrid)); // box heights
-            v.voters++;
-            v.yes += v.distance[g] <= params.region[g];
-            total += v.distance[g];
-        }
-        const float mean = v.voters ? total / v.voters : INFINITY;
-        // The library's last shapes are no pedestrians (two people side by
-        // side): only how close the closest of them comes counts.
-        if (s >= kPeople) {
-            not_person = std::min(not_person, mean);
+        return v->voters ? total / v->voters : INFINITY;
+    };
+    Vote best;
+    float best_total = INFINITY;
+    for (int s = 0; s < kPeople; s++) {
+        if (kRepeats.of_earlier[s])
             continue;
-        }
+        Vote v;
+        const float mean = compare(s, &v);
         v.score = v.voters >= kMinVoters ? (float)v.yes / v.voters : 0;
         v.silhouette = s;
         // The closest silhouette (mean distance over the voting regions)
@@ -278,12 +270,21 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
     // an open umbrella has a T's outline too), is no pedestrian; nor is a
     // blob that a shape a person is not fits better than every silhouette
     // (a group that a wide silhouette, three-quarters with legs in stride,
-    // would take for one person).
+    // would take for one person). Those shapes, the library's last, are
+    // compared only when they could overrule a yes.
     best.fill = p.fill;
     best.top = top_width(p);
-    if (best.fill > params.veto.max_fill || best.top > params.veto.max_top_width ||
-        not_person < best_total)
+    if (best.fill > params.veto.max_fill || best.top > params.veto.max_top_width) {
         best.score = std::min(best.score, 0.5f);
+    } else if (best.score > 0.5f) {
+        for (int s = kPeople; s < kSilhouettes; s++) {
+            Vote v;
+            if (!kRepeats.of_earlier[s] && compare(s, &v) < best_total) {
+                best.score = 0.5f;
+                break;
+            }
+        }
+    }
     return best;
 }
 

@@ -73,6 +73,11 @@ SHIPPED = ()
 WALKS = [(view, facing) for view in VIEWS for facing in ((1,) if view == "front" else (1, -1))]
 
 
+def facing_name(view, facing):
+    """The way a walker faces, as the names say it after the view."""
+    return "" if view == "front" else ", facing " + ("right" if facing > 0 else "left")
+
+
 def capsule(xx, yy, x0, y0, x1, y1, r):
     dx, dy = x1 - x0, y1 - y0
     t = np.clip(((xx - x0) * dx + (yy - y0) * dy) / (dx * dx + dy * dy), 0, 1)
@@ -217,9 +222,9 @@ def library(variants=SHIPPED):
                 carried = bag_of(view, phase) if bag else None
                 body, xs, ys = render(view, phase, facing, build, carried)
                 p, aspect = profile(body, xs, ys)
-                name = "%s%s, phase %d/%d%s%s" % (
-                    view, "" if view == "front" else ", facing " + ("right" if facing > 0 else "left"),
-                    phase, PHASES, "" if build == "average" else ", " + build,
+                name = "%s, phase %d/%d%s%s" % (
+                    view + facing_name(view, facing), phase, PHASES,
+                    "" if build == "average" else ", " + build,
                     ", " + carried if carried else "")
                 out.append((name, p, aspect, contour_points(body, xs, ys)))
     return out
@@ -230,7 +235,7 @@ def not_people():
     silhouettes."""
     out = []
     for view, facing in WALKS:
-        way = "" if view == "front" else ", facing " + ("right" if facing > 0 else "left")
+        way = facing_name(view, facing)
         for offset in GROUP_OFFSETS:
             body, xs, ys = group(view, facing, 2, offset)
             p, aspect = profile(body, xs, ys)

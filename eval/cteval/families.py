@@ -122,7 +122,7 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
                           stdout=subprocess.PIPE)
     try:
         run_ctrack(build, seq, info, "-", out, pixels=True, params=params,
-                   detections=detections, det=det if detections else None,
+                   detections=detections, det=det,
                    stdin=ff.stdout, env=env)
     finally:
         # A ct-track that failed leaves ffmpeg writing to a closed pipe:
