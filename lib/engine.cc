@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "clock.h"
+#include "tunable.h"
 
 namespace ctrack {
 
@@ -14,6 +15,13 @@ namespace {
 // left in the window does not hold them.
 constexpr double kMinInside = 0.9;
 constexpr double kMinSide = 1.0;
+// A tentative track meets a detection that misses its IoU gate when the
+// detection's centre lies within this many standard deviations of where
+// the track predicts it (its motion model's, with a detection's noise): at
+// a few frames a second a person walks out of their last box before their
+// track knows their velocity. At 25 frames/s the reach is inside the IoU
+// gate (docs/tuning.md, "A new track's reach").
+CT_TUNABLE(kNewTrackReach, "CTRACK_NEW_TRACK_REACH", 2.0);
 
 } // namespace
 
@@ -126,13 +134,21 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
         return;
     // Cost: 1 - IoU, plus appearance_weight (1 - DDIS) with appearance. A
     // pair is allowed only when its IoU reaches min_iou, whatever it looks
-    // like.
+    // like, or for a tentative track when the detection is within its reach
+    // (Gate::overlapping()).
     const double w = appearance_ ? cfg_.appearance_weight : 0.0;
     const double limit = 1.0 - min_iou + w + 1e-12;
     gate_.index(dets, det_idx);
     pairs_.clear();
-    for (int i = 0; i < n; i++)
-        gate_.overlapping(i, tracks_[(size_t)track_idx[(size_t)i]].cue, min_iou, pairs_);
+    for (int i = 0; i < n; i++) {
+        const Track &t = tracks_[(size_t)track_idx[(size_t)i]];
+        double reach = 0;
+        if (t.state == CT_TRACK_TENTATIVE) {
+            const double sd = cfg_.detection_noise * std::max(t.h.x, kMinSide);
+            reach = kNewTrackReach * std::sqrt(std::max(t.cx.p00, t.cy.p00) + sd * sd);
+        }
+        gate_.overlapping(i, t.cue, min_iou, pairs_, reach);
+    }
     if (w > 0) {
         // A pair alone in its row and its column is matched whatever it
         // looks like: its cost stays under the limit (the IoU gate holds and

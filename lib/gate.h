@@ -29,8 +29,13 @@ public:
     void index(const ct_detection *dets, const Vec<int> &cols);
     // Appends (row, k, 1 - IoU) for the indexed detections whose IoU with
     // `box` reaches min_iou (an IoU within 1e-12 of it counts), the
-    // kMaxPairsPerTrack highest when more do (ties: the lower k).
-    void overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out);
+    // kMaxPairsPerTrack best when more do (ties: the lower k). With reach >
+    // 0, also the detections that miss min_iou but whose centre lies within
+    // `reach` of the box's, at a height within (0.67, 1.5) times the box's,
+    // at a cost from (1 - min_iou) / 2 to 1 - min_iou as they lie farther:
+    // a new track's person may have walked out of their last box.
+    void overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out,
+                     double reach = 0);
     // Appends (row, k, distance) for the indexed detections whose centre
     // lies within `reach` of (cx, cy) and whose height is within (0.67, 1.5)
     // times h, the kMaxPairsPerTrack nearest when more do (ties: the lower

@@ -184,6 +184,46 @@ START_TEST(velocity_uses_time)
 }
 END_TEST
 
+/* A camera at 2 frames/s: a person walking 0.75 heights a second steps a
+ * whole box width between frames, out of their last box (IoU 0). A new
+ * track reaches as far as its motion model lets the person walk in the
+ * time since it saw them, so they are confirmed after min_hits and keep
+ * their id. At 25 frames/s the same step between frames (9 heights a
+ * second) is out of reach: no track is confirmed. */
+START_TEST(a_new_track_reaches_as_far_as_its_person_walks)
+{
+    const int rates[] = {2, 25};
+    for (int r = 0; r < 2; r++) {
+        ct_config cfg = test_config();
+        cfg.min_hits = 3;
+        ct_tracker *t = test_tracker(&cfg);
+        ct_track out[64];
+        const int64_t step = SEC / rates[r];
+        test_step(t, 0, NULL, 0, out); /* the first step confirms at once */
+        uint64_t id = 0;
+        for (int k = 1; k <= 8; k++) {
+            /* 30 pixels a step, one box width */
+            ct_detection d = test_det(100 + 30.0f * k, 100, 30, 80, 0.97f);
+            size_t n = test_step(t, k * step, &d, 1, out);
+            if (rates[r] == 25) {
+                ck_assert_uint_eq(n, 0);
+                continue;
+            }
+            ck_assert_uint_eq(n, k < 3 ? 0 : 1);
+            if (n == 1) {
+                ck_assert_int_eq(out[0].detection_index, 0);
+                if (!id)
+                    id = out[0].id;
+                ck_assert_uint_eq(out[0].id, id);
+            }
+        }
+        if (rates[r] == 2)
+            ck_assert_uint_eq(id, 1);
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
 /* Two people crossing paths with constant velocities keep their ids. */
 START_TEST(crossing_people_keep_ids)
 {
@@ -464,6 +504,7 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, lost_track_is_removed_and_ids_are_not_reused);
     tcase_add_test(tc, velocity_uses_time);
     tcase_add_test(tc, crossing_people_keep_ids);
+    tcase_add_test(tc, a_new_track_reaches_as_far_as_its_person_walks);
     tcase_add_test(tc, low_scores_continue_but_do_not_start);
     tcase_add_test(tc, clipping_and_image_exit);
     tcase_add_test(tc, max_tracks_bounds_live_tracks);

@@ -24,7 +24,7 @@ static const param_def params[] = {
     {"low_score", 'f', offsetof(ct_config, low_score), "detections below are ignored"},
     {"match_iou", 'f', offsetof(ct_config, match_iou), "IoU gate, high-score pass"},
     {"low_match_iou", 'f', offsetof(ct_config, low_match_iou), "IoU gate, low-score pass"},
-    {"tentative_match_iou", 'f', offsetof(ct_config, tentative_match_iou), "IoU gate for tentative tracks"},
+    {"tentative_match_iou", 'f', offsetof(ct_config, tentative_match_iou), "IoU gate for tentative tracks (or within their reach)"},
     {"min_hits", 'i', offsetof(ct_config, min_hits), "matched steps that confirm a track"},
     {"lost_lifetime", 'd', offsetof(ct_config, lost_lifetime), "seconds a lost track is kept"},
     {"report_lost_time", 'd', offsetof(ct_config, report_lost_time), "seconds a lost track is still reported"},

@@ -15,7 +15,7 @@ DATA = os.path.join(TOP, "tests", "data", "mot15")
 SCRIPTS = os.path.join(TOP, "scripts")
 CLASSIFIER_PARAMS = os.path.join(TOP, "lib", "classifier_params.inc")
 # (MOTA, IDF1) floors of the single runs from the pixels alone, as
-# tests/replay.sh checks them.
+# tests/replay.sh checks them (and reads them from here).
 PIXEL_FLOORS = {"PETS09-S2L1": (71.5, 78.0), "PETS09-S2L1 at half size": (68.0, 77.0),
                 "TUD-Campus": (32.0, 49.0)}
 

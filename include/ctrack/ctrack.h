@@ -118,7 +118,11 @@ typedef struct ct_config {
     float match_iou;
     /* Minimum IoU for the low-score second pass; in (0, 1]. */
     float low_match_iou;
-    /* Minimum IoU for a tentative track to be matched; in (0, 1]. */
+    /* Minimum IoU for a tentative track to be matched; in (0, 1]. A
+     * detection that misses it is matched when its centre lies within two
+     * standard deviations of where the track's motion model predicts it
+     * (at a few frames a second a new track's person walks out of their
+     * last box; docs/API.md, "Each step"). */
     float tentative_match_iou;
     /* Consecutive matched steps that confirm a new track (>= 1). */
     int32_t min_hits;
