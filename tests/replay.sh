@@ -36,6 +36,9 @@ check() { # NAME SEQ MIN_MOTA MIN_IDF1 CT_TRACK_ARGS... (DETS in them: the publi
 pixel_floors() { # NAME
     "$py" -c 'import sys; from cteval.data import PIXEL_FLOORS; print("%g %g" % PIXEL_FLOORS[sys.argv[1]])' "$1"
 }
+pets_floors=$(pixel_floors PETS09-S2L1)
+tud_floors=$(pixel_floors TUD-Campus)
+half_floors=$(pixel_floors "PETS09-S2L1 at half size")
 check "PETS09-S2L1, detections" PETS09-S2L1 68.0 68.5 DETS -s 768x576 -r 7
 check "TUD-Campus, detections" TUD-Campus 74.0 81.0 DETS -s 640x480 -r 25
 check "ADL-Rundle-8, detections" ADL-Rundle-8 31.0 38.5 DETS -s 1920x1080 -r 30
@@ -94,8 +97,10 @@ check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 71.
 # TUD-Campus's IDF1 fell from 51.5 to 49.4 with the silhouettes' variety
 # (0.9.0), while its condition families rose (docs/tuning.md, "Pixels only:
 # the contour template's thresholds").
-check "PETS09-S2L1, pixels only" PETS09-S2L1 $(pixel_floors PETS09-S2L1) -r 7 "$pets"
-check "TUD-Campus, pixels only" TUD-Campus $(pixel_floors TUD-Campus) -r 25 "$tmp/tud.y4m"
+# shellcheck disable=SC2086 # each holds two words, MOTA and IDF1
+check "PETS09-S2L1, pixels only" PETS09-S2L1 $pets_floors -r 7 "$pets"
+# shellcheck disable=SC2086
+check "TUD-Campus, pixels only" TUD-Campus $tud_floors -r 25 "$tmp/tud.y4m"
 # The frames cut by 2 pixels on each side (make eval's shift family): a
 # background column at the right edge stayed foreground, and its blob, 4 x
 # 28 pixels, scored 0.8 and started a track. A blob at the left or right
@@ -122,7 +127,8 @@ with open(sys.argv[1]) as src, open(sys.argv[2], "w") as out:
 PY
 "$ct_track" -q -o "$tmp/half-tracks.txt" -r 7 "$tmp/half.y4m"
 printf 'PETS09-S2L1 at half size, pixels only: '
-set -- $(pixel_floors "PETS09-S2L1 at half size")
+# shellcheck disable=SC2086
+set -- $half_floors
 "$py" -m cteval.score "$tmp/half-gt.txt" "$tmp/half-tracks.txt" \
     --min-mota "$1" --min-idf1 "$2" || fail=1
 # Washed out, as in haze (contrast 0.55, the black level raised by 0.1):
