@@ -142,11 +142,9 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
     pairs_.clear();
     for (int i = 0; i < n; i++) {
         const Track &t = tracks_[(size_t)track_idx[(size_t)i]];
-        double reach = 0;
-        if (t.state == CT_TRACK_TENTATIVE) {
-            const double sd = cfg_.detection_noise * std::max(t.h.x, kMinSide);
-            reach = kNewTrackReach * std::sqrt(std::max(t.cx.p00, t.cy.p00) + sd * sd);
-        }
+        const double reach = t.state == CT_TRACK_TENTATIVE
+                                 ? kNewTrackReach * t.centre_innovation_sd(cfg_.detection_noise)
+                                 : 0;
         gate_.overlapping(i, t.cue, min_iou, pairs_, reach);
     }
     if (w > 0) {

@@ -35,17 +35,21 @@ struct Axis {
         p11 = n11;
     }
 
+    // The variance of a measurement about the prediction: the position's
+    // and the measurement's own.
+    double innovation_var(double meas_sd) const { return p00 + meas_sd * meas_sd; }
+
     // The normalized innovation squared of a measurement z: about 1 on
     // average while the filter's noises describe the motion it sees.
     double nis(double z, double meas_sd) const
     {
         const double e = z - x;
-        return e * e / (p00 + meas_sd * meas_sd);
+        return e * e / innovation_var(meas_sd);
     }
 
     void update(double z, double meas_sd)
     {
-        double s = p00 + meas_sd * meas_sd;
+        double s = innovation_var(meas_sd);
         double k0 = p00 / s, k1 = p01 / s;
         double innov = z - x;
         x += k0 * innov;

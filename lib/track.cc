@@ -90,6 +90,12 @@ double Track::centre_nis(const ct_detection &d, double detection_noise) const
     return 0.5 * (cx.nis(d.left + d.width / 2.0, sd) + cy.nis(d.top + d.height / 2.0, sd));
 }
 
+double Track::centre_innovation_sd(double detection_noise) const
+{
+    const double sd = detection_noise * std::max(h.x, kMinSide);
+    return std::sqrt(std::max(cx.innovation_var(sd), cy.innovation_var(sd)));
+}
+
 void Track::correct(const ct_detection &d, double detection_noise, int index, int64_t t_us)
 {
     double sd = detection_noise * std::max<double>(d.height, kMinSide);

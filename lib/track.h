@@ -72,6 +72,9 @@ struct Track {
     // The centre's normalized innovation squared for detection d (the mean
     // of both axes), before correct().
     double centre_nis(const ct_detection &d, double detection_noise) const;
+    // The standard deviation of a detection's centre about the prediction
+    // on the less certain axis (a detection's noise at the track's height).
+    double centre_innovation_sd(double detection_noise) const;
     // Corrects the motion model by detection d, and records the hit.
     void correct(const ct_detection &d, double detection_noise, int index, int64_t t_us);
     // Corrects the motion model by where mean shift followed the person
