@@ -62,6 +62,7 @@ TRACKERS = [
     ("ctrack-detpix-verify", "ctrack, detections verified by the contour template",
      "detections + pixels"),
     ("ctrack-pix", "ctrack", "pixels"),
+    ("ctrack-pix-live", "ctrack, fed live (not primed, as a camera)", "pixels"),
     ("ctrack-pix-size", "ctrack, size and aspect instead of the contour template (ablation)",
      "pixels"),
     ("bytetrack", "ByteTrack (supervision 0.30.9)", "detections"),
@@ -80,6 +81,7 @@ CTRACK_RUNS = {
     "ctrack-detpix-noapp": (True, True, ["appearance=0"]),
     "ctrack-detpix-verify": (True, True, ["verify_detections=1"]),
     "ctrack-pix": (True, False, []),
+    "ctrack-pix-live": (True, False, ["--prime=0"]),
     "ctrack-pix-size": (True, False, ["pedestrian_test=1"]),
 }
 # OpenCV's single-object trackers, one per person (peers.OpenCVTrackers).
@@ -220,6 +222,7 @@ def lower_rates(build, seqs, tmp):
 # (None: the MOG2 baseline).
 CONDITION_RUNS = [
     ("ctrack-pix", "ctrack", "pixels", []),
+    ("ctrack-pix-live", "ctrack, fed live (not primed)", "pixels", ["--prime=0"]),
     ("ctrack-pix-size", "ctrack, size and aspect alone (ablation)", "pixels",
      ["pedestrian_test=1"]),
     ("ctrack-detpix", "ctrack", "detections + pixels", []),

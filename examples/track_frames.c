@@ -1,7 +1,9 @@
 /* A complete host without a person detector: reads raw I420 frames (as a
  * camera hands them over) on standard input, lets ctrack find the people in
  * the pixels alone, and prints the tracks of each frame as ct-track does
- * (frame,id,left,top,width,height,confidence,-1,-1,-1).
+ * (frame,id,left,top,width,height,confidence,-1,-1,-1). It tracks the
+ * frames as they come, as ct-track --prime 0 does: a recording can be
+ * primed first (ct_tracker_prime() on its first seconds; docs/API.md).
  *
  *   cc track_frames.c $(pkg-config --cflags --libs ctrack) -lm -o track_frames
  *   ffmpeg -i clip.mp4 -f rawvideo -pix_fmt yuv420p - | ./track_frames 640 480 25

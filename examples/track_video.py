@@ -9,12 +9,17 @@ array. Without --detections ctrack finds the people in the pixels itself;
 with a MOTChallenge detections file (frame,-1,left,top,width,height,score,...;
 frames 1-based) it tracks them with the pixels' help. The tracks are written
 as MOTChallenge lines (frame,id,left,top,width,height,confidence,-1,-1,-1),
-as ct-track writes them. Needs numpy and ffmpeg; run it from a source
+as ct-track writes them. From the pixels, the tracker first learns the
+background from the video's first seconds (Tracker.prime()), as ct-track
+does, so that the people there from its first frame are found from it.
+Needs numpy and ffmpeg; run it from a source
 checkout after `make` (the ctrack package is in python/, the library in
 build/lib/), or with ctrack installed. For many videos at once, see
 `python -m ctrack.batch`.
 """
 import argparse
+import itertools
+import math
 import os
 import sys
 
@@ -45,7 +50,15 @@ def main():
     out = open(a.output, "w") if a.output else sys.stdout
     with video, ctrack.Tracker(fps=rate[0] / rate[1], source=source) as tracker:
         try:
-            for k, frame in enumerate(video, start=1):
+            frames = iter(video)
+            if source == ctrack.SOURCE_PIXELS:
+                n = math.ceil(ctrack.PRIME_SECONDS * rate[0] / rate[1])
+                start = list(itertools.islice(frames, n))
+                if start:
+                    tracker.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
+                                  format="i420")
+                frames = itertools.chain(start, frames)
+            for k, frame in enumerate(frames, start=1):
                 d = dets[dets[:, 0] == k][:, 2:7] if dets is not None else None
                 tracks = tracker.feed(frame, d, timestamp=frame_time(k, rate), format="i420")
                 for line in ctrack.mot_lines(k, tracks):

@@ -18,6 +18,7 @@
 #include "frame.h"
 #include "sized.h"
 #include "engine.h"
+#include "prime.h"
 
 #define CT_STR2(x) #x
 #define CT_STR(x) CT_STR2(x)
@@ -109,6 +110,28 @@ int copy_out(const ct_tracker *tracker, const ctrack::Vec<T> &items, const char 
     return CT_OK;
 }
 
+
+// One step on a validated frame: packed colour converted, the engine's
+// step, and the time it took counted (validate_ns already spent on it).
+// Throws as Engine::step() does, leaving the tracker as it was.
+void step_frame(ct_tracker *tracker, const ct_frame &f, const ct_detection *dets, size_t n,
+                uint64_t validate_ns, ctrack::Stopwatch &sw)
+{
+    uint64_t convert_ns = 0;
+    ctrack::Planes planes;
+    if (ctrack::packed_rgb(f.format)) {
+        planes = ctrack::packed_to_i420(f, tracker->dsp, &tracker->converted);
+        convert_ns = sw.lap();
+    } else {
+        planes = ctrack::Planes::of(f);
+    }
+    tracker->engine.step(f.timestamp_us, planes, ctrack::ImageSize{f.width, f.height}, dets,
+                         n);
+    tracker->steps++;
+    tracker->validate_ns += validate_ns;
+    tracker->convert_ns += convert_ns;
+    tracker->feed_ns += validate_ns + convert_ns + sw.lap();
+}
 
 } // namespace
 
@@ -245,27 +268,75 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
                             "frame.timestamp_us: %lld does not increase (the last was %lld)",
                             (long long)f.timestamp_us, (long long)e.last_time());
     const uint64_t validate_ns = sw.lap();
-    uint64_t convert_ns = 0;
     // Whatever the step makes allocates from the tracker's Memory.
     ctrack::MemoryScope scope(&tracker->memory);
-    st = guarded(tracker, [&] {
-        ctrack::Planes planes;
-        if (ctrack::packed_rgb(f.format)) {
-            planes = ctrack::packed_to_i420(f, tracker->dsp, &tracker->converted);
-            convert_ns = sw.lap();
-        } else {
-            planes = ctrack::Planes::of(f);
-        }
-        e.step(f.timestamp_us, planes, ctrack::ImageSize{f.width, f.height}, dets, n);
+    return guarded(tracker, [&] {
+        step_frame(tracker, f, dets, n, validate_ns, sw);
         return CT_OK;
     });
-    if (st == CT_OK) {
-        tracker->steps++;
-        tracker->validate_ns += validate_ns;
-        tracker->convert_ns += convert_ns;
-        tracker->feed_ns += validate_ns + convert_ns + sw.lap();
-    }
-    return st;
+}
+
+int ct_tracker_prime(ct_tracker *tracker, const ct_frame *frames, size_t n)
+{
+    if (!tracker)
+        return CT_ERROR_INVALID_ARGUMENT;
+    ctrack::Stopwatch sw;
+    clear_error(tracker);
+    char *msg = tracker->error;
+    const size_t len = sizeof tracker->error;
+    if (!frames || n == 0)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "frames: %s; priming takes at least one frame",
+                            frames ? "n is 0" : "NULL");
+    ctrack::MemoryScope scope(&tracker->memory);
+    return guarded(tracker, [&]() -> int {
+        // Every frame is checked before the tracker changes.
+        ctrack::Vec<ct_frame> loaded(n);
+        for (size_t i = 0; i < n; i++) {
+            char why[400];
+            const int st = ctrack::load_frame(&frames[i], &loaded[i], why, sizeof why);
+            const ct_frame &f = loaded[i], &f0 = loaded[0];
+            if (st != CT_OK)
+                return ctrack::fail(msg, len, st, "frames[%zu]: %s", i, why);
+            if (f.format == CT_FORMAT_NONE)
+                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                    "frames[%zu]: no pixels (CT_FORMAT_NONE); priming learns "
+                                    "the background from the pixels",
+                                    i);
+            if (i > 0 && (f.format != f0.format || f.width != f0.width ||
+                          f.height != f0.height))
+                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                    "frames[%zu]: %dx%d in another format or size than "
+                                    "frames[0] (%dx%d)",
+                                    i, f.width, f.height, f0.width, f0.height);
+            if (i > 0 && f.timestamp_us <= loaded[i - 1].timestamp_us)
+                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                    "frames[%zu].timestamp_us: %lld does not increase (the "
+                                    "one before is %lld)",
+                                    i, (long long)f.timestamp_us,
+                                    (long long)loaded[i - 1].timestamp_us);
+        }
+        ctrack::Engine &e = tracker->engine;
+        // The priming's steps may confirm tracks on what is left in the
+        // cleaned frames; no host saw their ids, which are given again.
+        const uint64_t next_id = e.next_id();
+        try {
+            e.rewind();
+            ctrack::PackedFrame median, clean;
+            ctrack::median_frame(loaded.data(), n, &median);
+            for (size_t i = 0; i < n; i++) {
+                ctrack::clean_frame(loaded[i], median, ctrack::kPrimeClean, &clean);
+                step_frame(tracker, clean.frame(), nullptr, 0, sw.lap(), sw);
+            }
+            e.rewind();
+            e.set_next_id(next_id);
+        } catch (...) {
+            e.reset();
+            e.set_next_id(next_id);
+            throw;
+        }
+        return CT_OK;
+    });
 }
 
 

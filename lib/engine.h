@@ -38,6 +38,17 @@ public:
     void step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
               size_t n);
     void reset();
+    // Forgets the tracks and the last timestamp, as reset(), but keeps what
+    // was learnt of the scene: the background model with its noise,
+    // contrast and exposure, the people's size, the scene's motion, the
+    // size gate and the detector's scale of scores. The next step may go
+    // back in time (a recording played again): the background's own clock
+    // goes on from where it was.
+    void rewind();
+    // The id the next confirmed track takes; set_next_id() puts back one
+    // taken before (a priming's steps confirm no track a host saw).
+    uint64_t next_id() const { return next_id_; }
+    void set_next_id(uint64_t id) { next_id_ = id; }
 
     const Vec<ct_track> &reported() const { return reported_; }
     const Vec<ct_candidate> &candidates() const { return pixels_.candidates(); }
@@ -113,6 +124,13 @@ private:
     uint64_t next_id_ = 1;
     int64_t last_us_ = 0;
     bool has_time_ = false;
+    // The scene's clock (the background model's): the host's timestamps
+    // plus scene_shift_us_, which rewind() sets so that the clock goes on
+    // one frame interval after the last step before it.
+    int64_t scene_shift_us_ = 0;
+    int64_t scene_last_us_ = 0;
+    int64_t scene_interval_us_ = 0;
+    bool rewound_ = false;
 
     // The state before the step in progress, restored if it throws (the
     // restoring copy fits in capacity the vectors already have, so it cannot

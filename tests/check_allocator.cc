@@ -301,6 +301,91 @@ START_TEST(create_checks_the_allocator)
 }
 END_TEST
 
+// ct_tracker_prime() on TUD-Campus's first 20 frames, with a host's
+// allocator: its blocks come from the callbacks and nothing strays; a
+// refused block fails it with CT_ERROR_OUT_OF_MEMORY and leaves the tracker
+// as after ct_tracker_reset() (it then tracks the frames as a tracker never
+// primed does), each of its allocations refused in turn until it makes
+// fewer; then it goes through and tracks them as a primed tracker of the
+// default allocator does.
+START_TEST(prime_with_the_host_allocator)
+{
+    constexpr int kFrames = 20;
+    char err[512];
+    video_params ip = {0, 0, CT_FORMAT_I420};
+    video_info info;
+    video_input *in = nullptr;
+    ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
+    ck_assert_int_eq(video_keep(in, kFrames, err, sizeof err), 0);
+    ct_frame frames[kFrames];
+    for (int k = 0; k < kFrames; k++) {
+        ck_assert_int_eq(video_read(in, &frames[k], err, sizeof err), 1);
+        ck_assert_int_eq(video_kept(in, k, &frames[k]), 1);
+        frames[k].timestamp_us = k * 40000;
+    }
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    cfg.source = CT_SOURCE_PIXELS;
+    // What the default allocator's trackers give, primed and live.
+    auto run = [&](ct_tracker *t, const Counting *host) {
+        std::vector<std::vector<ct_track>> out;
+        for (int k = 0; k < kFrames; k++) {
+            const int st = host ? watched(*host, [&] { return ct_tracker_feed(t, &frames[k], nullptr, 0); })
+                                : ct_tracker_feed(t, &frames[k], nullptr, 0);
+            ck_assert_int_eq(st, CT_OK);
+            out.push_back(tracks_of(t));
+        }
+        return out;
+    };
+    auto same = [](const std::vector<std::vector<ct_track>> &a,
+                   const std::vector<std::vector<ct_track>> &b) {
+        ck_assert_uint_eq(a.size(), b.size());
+        for (size_t k = 0; k < a.size(); k++)
+            assert_equal(a[k], b[k]);
+    };
+    ct_tracker *ref = nullptr;
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    const auto live = run(ref, nullptr);
+    ct_tracker_destroy(ref);
+    ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
+    ck_assert_int_eq(ct_tracker_prime(ref, frames, kFrames), CT_OK);
+    const auto primed = run(ref, nullptr);
+    ct_tracker_destroy(ref);
+    size_t n_primed = 0, n_live = 0;
+    for (int k = 0; k < kFrames; k++)
+        n_primed += primed[k].size(), n_live += live[k].size();
+    ck_assert_uint_gt(n_primed, n_live); // the priming is seen
+
+    Counting host;
+    ct_allocator a = {sizeof a, counting_alloc, counting_free, &host};
+    strays = 0;
+    long k = 0;
+    for (;; k = k < 8 ? k + 1 : k * 3 / 2) {
+        ct_tracker *t = nullptr;
+        ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &a, &t), CT_OK);
+        host.fail_countdown = k;
+        const int st = watched(host, [&] { return ct_tracker_prime(t, frames, kFrames); });
+        const bool refused = host.fail_countdown < 0;
+        host.fail_countdown = -1;
+        if (!refused) {
+            ck_assert_int_eq(st, CT_OK);
+            same(run(t, &host), primed);
+            watched(host, [&] { ct_tracker_destroy(t); return 0; });
+            break;
+        }
+        ck_assert_int_eq(st, CT_ERROR_OUT_OF_MEMORY);
+        ck_assert_str_eq(ct_tracker_last_error(t), "out of memory");
+        same(run(t, &host), live);
+        watched(host, [&] { ct_tracker_destroy(t); return 0; });
+    }
+    ck_assert_int_gt(k, 8);
+    ck_assert_int_eq(strays, 0);
+    ck_assert_int_eq(host.frees, host.allocs);
+    ck_assert_int_eq(host.live, 0);
+    video_close(in);
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -318,6 +403,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, pixels_only);
     tcase_add_test(tc, pixels_only_bgr24);
     tcase_add_test(tc, verify_detections);
+    tcase_add_test(tc, prime_with_the_host_allocator);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

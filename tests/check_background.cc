@@ -14,6 +14,7 @@
 #include "background.h"
 #include "blobs.h"
 #include "classifier.h"
+#include "prime.h"
 
 using namespace ctrack;
 
@@ -990,6 +991,74 @@ START_TEST(small_divisions_are_exact)
             wrong += divide_small(n, d) != n / d;
     ck_assert_int_eq(wrong, 0);
 }
+
+// A recording's background for ct_tracker_prime(): over 9 frames of a
+// noisy scene (each byte +-1 around it) that a bright block crosses, each
+// byte's median is the scene within the noise, block or not; a frame
+// cleaned against it has the block put back to the median and keeps its
+// own bytes, noise and all, everywhere else. In I420 (the chroma planes
+// too) and packed BGR.
+START_TEST(a_recordings_median_and_its_cleaned_frames)
+{
+    const uint32_t format = _i == 0 ? CT_FORMAT_I420 : CT_FORMAT_BGR24;
+    const int w = 64, h = 48, n = 9;
+    const size_t bytes = format == CT_FORMAT_I420 ? (size_t)w * h * 3 / 2 : (size_t)w * h * 3;
+    std::vector<std::vector<uint8_t>> buf(n, std::vector<uint8_t>(bytes));
+    std::vector<ct_frame> frames(n);
+    auto scene = [](size_t i) { return (uint8_t)(60 + (i * 37) % 101); };
+    auto noise = [](int k, size_t i) {
+        return (int)((((uint32_t)i * 2654435761u + (uint32_t)k * 40503u) >> 7) % 3) - 1;
+    };
+    // The block: 8 columns from x = 6k, every row, in every plane.
+    auto in_block = [&](int k, size_t i) {
+        size_t x;
+        if (format == CT_FORMAT_BGR24)
+            x = (i % ((size_t)w * 3)) / 3;
+        else if (i < (size_t)w * h)
+            x = i % (size_t)w;
+        else
+            x = 2 * (((i - (size_t)w * h) % ((size_t)w * h / 4)) % (size_t)(w / 2));
+        return (int)x >= 6 * k && (int)x < 6 * k + 8;
+    };
+    for (int k = 0; k < n; k++) {
+        for (size_t i = 0; i < bytes; i++)
+            buf[k][i] = in_block(k, i) ? 250 : (uint8_t)(scene(i) + noise(k, i));
+        ct_frame &f = frames[k];
+        std::memset(&f, 0, sizeof f);
+        f.size = sizeof f;
+        f.format = format;
+        f.width = w;
+        f.height = h;
+        f.timestamp_us = k * 40000;
+        f.planes[0] = buf[k].data();
+        if (format == CT_FORMAT_I420) {
+            f.strides[0] = w;
+            f.planes[1] = buf[k].data() + w * h;
+            f.planes[2] = buf[k].data() + w * h + w * h / 4;
+            f.strides[1] = f.strides[2] = w / 2;
+        } else {
+            f.strides[0] = 3 * w;
+        }
+    }
+    PackedFrame median, clean;
+    median_frame(frames.data(), n, &median);
+    const uint8_t *m = median.frame().planes[0];
+    for (size_t i = 0; i < bytes; i++)
+        ck_assert_msg(std::abs(m[i] - scene(i)) <= 1, "byte %zu: median %d, scene %d", i, m[i],
+                      scene(i));
+    for (int k = 0; k < n; k++) {
+        clean_frame(frames[k], median, 3.0, &clean);
+        ck_assert_int_eq(clean.frame().timestamp_us, frames[k].timestamp_us);
+        const uint8_t *c = clean.frame().planes[0];
+        for (size_t i = 0; i < bytes; i++) {
+            if (in_block(k, i))
+                ck_assert_uint_eq(c[i], m[i]);
+            else
+                ck_assert_msg(c[i] == buf[k][i], "frame %d byte %zu: %d, not %d (median %d)", k, i, c[i], buf[k][i], m[i]);
+        }
+    }
+}
+END_TEST
 END_TEST
 
 int main(int argc, char **argv)
@@ -1003,6 +1072,7 @@ int main(int argc, char **argv)
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, small_divisions_are_exact);
+    tcase_add_loop_test(tc, a_recordings_median_and_its_cleaned_frames, 0, 2);
     tcase_add_test(tc, repeated_silhouettes_are_compared_once);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);

@@ -895,6 +895,153 @@ START_TEST(size_test_scores_by_size_and_aspect)
 }
 END_TEST
 
+/* A recording's start: two people stand talking for its first second, then
+ * walk apart (one each way, 2 px a frame at 10 frames/s). Fed live, the
+ * background model takes them for background in frame 1, and its first
+ * 11 frames give no track on them. Primed on the recording's 40 frames
+ * (ct_tracker_prime()), the tracker finds both from the first frame:
+ * confirmed at the third (min_hits), not at the first (candidates from the
+ * pixels are never confirmed at once), and each keeps one id. In I420, NV12
+ * and GRAY8. */
+#define PRIME_FRAMES 40
+static double prime_x(int person, int k)
+{
+    const double walk = k < 10 ? 0 : 2.0 * (k - 10);
+    return person == 0 ? 120 - walk : 200 + walk;
+}
+
+static void prime_scene(image *im, int k)
+{
+    draw(im, -1, 0);
+    draw_pedestrian(im, prime_x(0, k), 60);
+    draw_pedestrian(im, prime_x(1, k), 60);
+}
+
+/* The tracks on each person in out[0..n-1]: their ids, 0 if none. */
+static void ids_on_people(const ct_track *out, size_t n, int k, uint64_t id[2])
+{
+    for (int p = 0; p < 2; p++) {
+        id[p] = 0;
+        for (size_t i = 0; i < n; i++)
+            if (out[i].state == CT_TRACK_CONFIRMED &&
+                fabs(out[i].barycenter_x - prime_x(p, k)) < 10 &&
+                fabs(out[i].top - 60) < 10 && out[i].height > 55 && out[i].height < 85)
+                id[p] = out[i].id;
+    }
+}
+
+START_TEST(a_primed_tracker_finds_who_is_there_from_the_first_frame)
+{
+    const uint32_t format = formats[_i];
+    static image frames[PRIME_FRAMES];
+    ct_frame f[PRIME_FRAMES];
+    for (int k = 0; k < PRIME_FRAMES; k++) {
+        prime_scene(&frames[k], k);
+        f[k] = frame_of(&frames[k], format, k * SEC / 10);
+    }
+    ct_config cfg = pixels_config();
+    ct_track out[64];
+    uint64_t id[2];
+    /* Live: nobody in the first 11 frames. */
+    ct_tracker *t = test_tracker(&cfg);
+    for (int k = 0; k < 11; k++) {
+        const size_t n = step_pixels(t, &frames[k], format, k * SEC / 10, NULL, 0, out);
+        ids_on_people(out, n, k, id);
+        ck_assert_msg(id[0] == 0 && id[1] == 0, "live, frame %d: a track on a person", k + 1);
+    }
+    ct_tracker_destroy(t);
+    /* Primed, then fed from the first frame, with timestamps from 5 s. */
+    t = test_tracker(&cfg);
+    ck_assert_int_eq(ct_tracker_prime(t, f, PRIME_FRAMES), CT_OK);
+    uint64_t first[2] = {0, 0};
+    for (int k = 0; k < PRIME_FRAMES; k++) {
+        const size_t n = step_pixels(t, &frames[k], format, 5 * SEC + k * SEC / 10, NULL, 0, out);
+        ids_on_people(out, n, k, id);
+        for (int p = 0; p < 2; p++) {
+            if (k < 2)
+                ck_assert_msg(n == 0, "frame %d: %zu tracks before min_hits", k + 1, n);
+            else
+                ck_assert_msg(id[p] != 0, "primed, frame %d: no track on person %d (%zu tracks)",
+                              k + 1, p, n);
+            if (k == 2)
+                first[p] = id[p];
+            else if (k > 2)
+                ck_assert_uint_eq(id[p], first[p]);
+        }
+    }
+    ck_assert_uint_ne(first[0], first[1]);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* ct_tracker_prime() refuses what it cannot learn from, with a message, and
+ * the tracker it refuses goes on as before: the same tracks at the next
+ * step as a tracker never asked. */
+START_TEST(prime_refuses_bad_frames)
+{
+    static image frames[3];
+    ct_frame f[3];
+    for (int k = 0; k < 3; k++) {
+        prime_scene(&frames[k], 10 * k);
+        f[k] = frame_of(&frames[k], CT_FORMAT_I420, k * SEC / 10);
+    }
+    ct_config cfg = pixels_config();
+    ct_tracker *t = test_tracker(&cfg), *ref = test_tracker(&cfg);
+    ct_track out[64], ref_out[64];
+    for (int k = 0; k < 20; k++) {
+        static image im;
+        draw(&im, 40 + 6.0 * k, 120);
+        step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        step_pixels(ref, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, ref_out);
+    }
+    ck_assert_int_eq(ct_tracker_prime(NULL, f, 3), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_prime(t, NULL, 3), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "NULL"));
+    ck_assert_int_eq(ct_tracker_prime(t, f, 0), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "n is 0"));
+    struct {
+        int index;
+        void (*spoil)(ct_frame *);
+        const char *message;
+    } cases[] = {
+        {1, NULL, "no pixels"},
+        {2, NULL, "another format or size"},
+        {2, NULL, "does not increase"},
+        {1, NULL, "stride"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        ct_frame bad[3] = {f[0], f[1], f[2]};
+        ct_frame *b = &bad[cases[c].index];
+        switch (c) {
+        case 0: *b = test_frame(b->timestamp_us, W, H); break;
+        case 1: b->width = W / 2; b->height = H / 2; b->format = CT_FORMAT_GRAY8; break;
+        case 2: b->timestamp_us = bad[1].timestamp_us; break;
+        case 3: b->strides[0] = W / 2; break;
+        }
+        ck_assert_int_ne(ct_tracker_prime(t, bad, 3), CT_OK);
+        ck_assert_msg(strstr(ct_tracker_last_error(t), cases[c].message) &&
+                          strstr(ct_tracker_last_error(t), "frames["),
+                      "case %zu: '%s'", c, ct_tracker_last_error(t));
+    }
+    static image im;
+    draw(&im, 40 + 6.0 * 20, 120);
+    const size_t n = step_pixels(t, &im, CT_FORMAT_I420, 2 * SEC, NULL, 0, out);
+    const size_t n_ref = step_pixels(ref, &im, CT_FORMAT_I420, 2 * SEC, NULL, 0, ref_out);
+    ck_assert_uint_ge(n_ref, 1);
+    ck_assert_uint_eq(n, n_ref);
+    for (size_t i = 0; i < n; i++) {
+        ck_assert_uint_eq(out[i].id, ref_out[i].id);
+        ck_assert_float_eq(out[i].left, ref_out[i].left);
+    }
+    /* A good prime forgets the tracks and the time: an earlier timestamp
+     * is taken. */
+    ck_assert_int_eq(ct_tracker_prime(t, f, 3), CT_OK);
+    ck_assert_uint_eq(step_pixels(t, &frames[0], CT_FORMAT_I420, 0, NULL, 0, out), 0);
+    ct_tracker_destroy(t);
+    ct_tracker_destroy(ref);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -920,6 +1067,8 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, person_size_learnt_from_walkers_at_two_depths);
     tcase_add_test(tc, working_scale_follows_the_people_size);
     tcase_add_test(tc, size_test_scores_by_size_and_aspect);
+    tcase_add_loop_test(tc, a_primed_tracker_finds_who_is_there_from_the_first_frame, 0, 3);
+    tcase_add_test(tc, prime_refuses_bad_frames);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,7 +1,8 @@
 #!/bin/sh
 # examples/track_frames.c, the host without a detector, on TUD-Campus's raw
-# I420 frames: it writes what ct-track writes from the pixels alone, byte
-# for byte, and refuses bad arguments and a frame cut short.
+# I420 frames: it writes what ct-track writes from the pixels alone, fed
+# live (--prime 0: the example tracks a stream as it comes), byte for byte,
+# and refuses bad arguments and a frame cut short.
 #   example_frames.sh TRACK_FRAMES CT_TRACK TUD_Y4M
 set -eu
 y4m=$3
@@ -11,7 +12,7 @@ trap 'rm -rf "$tmp"' EXIT
 ex=$(wrap "$1" "$tmp") ct=$(wrap "$2" "$tmp")
 ffmpeg -v error -i "$y4m" -f rawvideo -pix_fmt yuv420p "$tmp/tud.i420"
 "$ex" 640 480 25 < "$tmp/tud.i420" > "$tmp/example.txt"
-"$ct" -q -r 25 "$y4m" > "$tmp/ct.txt"
+"$ct" -q -r 25 --prime 0 "$y4m" > "$tmp/ct.txt"
 lines=$(wc -l < "$tmp/ct.txt")
 [ "$lines" -gt 50 ] || { echo "example_frames: ct-track tracked only $lines lines"; exit 1; }
 cmp "$tmp/ct.txt" "$tmp/example.txt" ||

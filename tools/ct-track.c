@@ -24,6 +24,7 @@ typedef struct run {
     FILE *out, *cand_out;
     overlay_writer *overlay;
     int width, height;
+    uint32_t format; /* the video's */
     double rate_num, rate_den;
     long long frames; /* in the input when known, else <= 0 */
     /* This step's tracks and candidates, in buffers that grow as needed. */
@@ -91,6 +92,7 @@ static int open_run(run *r)
         }
         r->width = info.width;
         r->height = info.height;
+        r->format = info.format;
         if (o->fps <= 0 && info.rate_num > 0) {
             r->rate_num = info.rate_num;
             r->rate_den = info.rate_den;
@@ -268,9 +270,72 @@ static int close_run(run *r, int rc)
     return rc;
 }
 
+/* Frames kept in memory for --prime at most: a shorter start beyond. */
+#define PRIME_MAX_BYTES ((size_t)512 << 20)
+
+/* --prime: the tracker learns the scene's background from the video's first
+ * seconds (ct_tracker_prime()), then tracks from the first frame, which the
+ * reader replays from memory. Only where the tracker uses a background: from
+ * the pixels, or verifying detections. */
+static int prime(run *r)
+{
+    const options *o = r->o;
+    if (!r->in || o->no_pixels || !(o->prime > 0) ||
+        (o->cfg.source != CT_SOURCE_PIXELS && !o->cfg.verify_detections))
+        return 0;
+    long long n = (long long)ceil(o->prime * r->rate_num / r->rate_den);
+    if (r->frames > 0 && n > r->frames)
+        n = r->frames;
+    const size_t bytes = frame_bytes(r->format, r->width, r->height);
+    char msg[512];
+    if (bytes > 0 && (size_t)n > PRIME_MAX_BYTES / bytes) {
+        n = (long long)(PRIME_MAX_BYTES / bytes);
+        if (n < 1)
+            return 0;
+        fprintf(stderr, "ct-track: --prime: %lld frames fit in %zu MiB, %.2f s\n", n,
+                PRIME_MAX_BYTES >> 20, (double)n * r->rate_den / r->rate_num);
+    }
+    if (video_keep(r->in, n, msg, sizeof msg) < 0) {
+        fprintf(stderr, "ct-track: --prime: %s\n", msg);
+        return -1;
+    }
+    ct_frame *frames = malloc((size_t)n * sizeof *frames);
+    if (!frames) {
+        fprintf(stderr, "ct-track: out of memory\n");
+        return -1;
+    }
+    long long got = 0;
+    for (;;) {
+        ct_frame frame, picture;
+        const int st = got < n ? next_frame(r, got + 1, &frame, &picture) : 0;
+        if (st < 0) {
+            free(frames);
+            return -1;
+        }
+        if (st == 0)
+            break;
+        got++;
+    }
+    for (long long i = 0; i < got; i++) {
+        video_kept(r->in, i, &frames[i]);
+        frames[i].timestamp_us = (int64_t)llround((double)i * 1e6 * r->rate_den / r->rate_num);
+    }
+    const int st = got > 0 ? ct_tracker_prime(r->tracker, frames, (size_t)got) : CT_OK;
+    free(frames);
+    if (st != CT_OK) {
+        fprintf(stderr, "ct-track: --prime: %s: %s\n", ct_status_str(st),
+                ct_tracker_last_error(r->tracker));
+        return -1;
+    }
+    video_replay(r->in);
+    return 0;
+}
+
 static int track_all(run *r)
 {
     const options *o = r->o;
+    if (prime(r) < 0)
+        return EXIT_RUNTIME;
     progress pr;
     progress_start(&pr, o->progress, r->frames);
     long long k = 0;

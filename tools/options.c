@@ -83,6 +83,11 @@ static void usage(FILE *out)
             "  -r, --fps RATE         frame rate (default 25; a Y4M header's rate unless given)\n"
             "      --no-pixels        read the video for its frames but give the tracker\n"
             "                         detections only\n"
+            "      --prime SECONDS    where the tracker reads a background (without\n"
+            "                         --detections, or verify_detections=1), learn it from\n"
+            "                         the video's first SECONDS, then track from its first\n"
+            "                         frame (default %g; 0: no). The frames are kept in\n"
+            "                         memory (512 MiB at most)\n"
             "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
             "      --overlay FILE     also write the frames as Y4M with boxes, ids and trails\n"
             "                         drawn (grey frames with detections only)\n"
@@ -104,7 +109,8 @@ static void usage(FILE *out)
             "  -h, --help             this help\n"
             "  -V, --version          print the version\n"
             "\n"
-            "parameters (defaults):\n");
+            "parameters (defaults):\n",
+            CT_PRIME_SECONDS);
     for (size_t i = 0; i < sizeof params / sizeof params[0]; i++) {
         fprintf(out, "  %-26s ", params[i].name);
         print_param_value(out, &cfg, &params[i]);
@@ -202,10 +208,11 @@ int options_parse(int argc, char **argv, options *o)
     ct_config_default(&o->cfg, sizeof o->cfg);
     o->progress = isatty(STDERR_FILENO);
     o->format = CT_FORMAT_I420;
+    o->prime = CT_PRIME_SECONDS;
 
     enum {
         OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
-        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE
+        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE, OPT_PRIME
     };
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
@@ -213,6 +220,7 @@ int options_parse(int argc, char **argv, options *o)
         {"format", required_argument, NULL, 'f'},
         {"fps", required_argument, NULL, 'r'},
         {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
+        {"prime", required_argument, NULL, OPT_PRIME},
         {"output", required_argument, NULL, 'o'},
         {"overlay", required_argument, NULL, OPT_OVERLAY},
         {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
@@ -257,6 +265,16 @@ int options_parse(int argc, char **argv, options *o)
             break;
         }
         case OPT_NO_PIXELS: o->no_pixels = 1; break;
+        case OPT_PRIME: {
+            char *end;
+            o->prime = strtod(optarg, &end);
+            if (end == optarg || *end || !(o->prime >= 0 && o->prime <= 3600)) {
+                fprintf(stderr, "ct-track: --prime: '%s' is not a duration in [0, 3600] "
+                                "seconds\n", optarg);
+                return EXIT_USAGE;
+            }
+            break;
+        }
         case 'o': o->out_path = optarg; break;
         case OPT_OVERLAY: o->overlay_path = optarg; break;
         case OPT_OVERLAY_CANDIDATES: o->overlay_candidates = 1; break;

@@ -17,6 +17,7 @@ typedef struct options {
     int width, height;       /* --size (raw video, or detections only) */
     uint32_t format;         /* --format of a raw video */
     double fps;              /* --fps, 0 when not given */
+    double prime;            /* --prime, seconds */
     int no_pixels, progress, stats, overlay_candidates, overlay_size;
 } options;
 

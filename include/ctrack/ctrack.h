@@ -360,8 +360,8 @@ typedef struct ct_allocator {
  * `allocator` and given back to it, at the latest by ct_tracker_destroy().
  * `allocator` NULL is ct_tracker_create(); else alloc and free are both set.
  * The struct is copied. The callbacks are called only from inside
- * ct_tracker_create_with_allocator(), ct_tracker_feed(), ct_tracker_reset()
- * and ct_tracker_destroy(), on the calling thread. Not the tracker's own,
+ * ct_tracker_create_with_allocator(), ct_tracker_feed(), ct_tracker_prime(),
+ * ct_tracker_reset() and ct_tracker_destroy(), on the calling thread. Not the tracker's own,
  * and from the C++ runtime's operator new: FLANN's kd-tree, which serves
  * appearance templates of more than 128 points only (the library's have
  * 72), and the C++ runtime's exception objects. (docs/API.md, "Memory".) */
@@ -385,6 +385,27 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 
 /* Forgets every track and the last timestamp; ids keep increasing. */
 CT_API int ct_tracker_reset(ct_tracker *tracker);
+
+/* Learns the scene's background from n frames of a recording before
+ * tracking it (added in 0.9.0): its first seconds, in order, with increasing
+ * timestamps, all with pixels, of one size and format. Each pixel's median
+ * over them (over 31 of them, evenly spaced, when there are more) is the
+ * background behind the people who walk through; the frames, with what
+ * differs from it by more than their noise put back to it, then teach the
+ * background model its levels and the scene's noise. Then the tracker
+ * forgets the tracks and the last timestamp, as ct_tracker_reset() does,
+ * but keeps the background: feed the recording from its first frame, with
+ * any timestamps. The people already there when it starts are found from
+ * its first frame (CT_SOURCE_PIXELS, or verify_detections), where a live
+ * feed has seen no background behind them yet. The frames are read during
+ * the call only. Their steps count in ct_stats. When the frames are at fault
+ * nothing changes; when memory runs out, the tracker is left as after
+ * ct_tracker_reset(). (docs/API.md, "A recording's start".) */
+CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *frames, size_t n);
+
+/* The seconds of a recording's start that ct-track and the Python batch
+ * runner prime on by default (docs/tuning.md, "A recording's start"). */
+#define CT_PRIME_SECONDS 3.0
 
 /* ------------------------------------------------------------------------ */
 /* Candidates found in the pixels (source CT_SOURCE_PIXELS), or the external

@@ -20,10 +20,11 @@ import numpy as np
 
 from . import _abi
 from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
-                   SOURCE_DETECTIONS, SOURCE_PIXELS, PEDESTRIAN_TEMPLATE, PEDESTRIAN_SIZE)
+                   SOURCE_DETECTIONS, SOURCE_PIXELS, PEDESTRIAN_TEMPLATE, PEDESTRIAN_SIZE,
+                   PRIME_SECONDS)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "PRIME_SECONDS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
 #: The version of the header this package mirrors (the library it loads
 #: may be newer: version() tells).
@@ -142,6 +143,19 @@ def bgr_to_i420(image):
     return out
 
 
+def _microseconds(ts, what):
+    """Seconds as the int64 microseconds of ct_frame.timestamp_us."""
+    ts = float(ts)
+    if not math.isfinite(ts):
+        raise ValueError("%s: %r is not finite" % (what, ts))
+    us = int(round(ts * 1e6))
+    if not -2**63 <= us < 2**63:
+        # ctypes would wrap it round silently
+        raise ValueError("%s: %r s is outside int64 microseconds "
+                         "(about +-292,000 years)" % (what, ts))
+    return us
+
+
 class Tracker:
     """One tracker. Keyword parameters are the fields of ct_config
     (high_score, min_hits, lost_lifetime, ...; see docs/API.md), plus `fps`
@@ -216,6 +230,40 @@ class Tracker:
         self._check(self._lib.ct_tracker_reset(self._handle()))
         self._last_ts = None
 
+    def prime(self, frames, timestamps=None, format=None):
+        """Learns the scene's background from a recording's first seconds
+        (ct_tracker_prime(); PRIME_SECONDS is the length ct-track takes),
+        then forgets the tracks and the time: feed the recording from its
+        first frame next, and the people there when it starts are found
+        from it. frames: a sequence of images as feed() takes them, all of
+        one size and format, with pixels. timestamps: seconds, increasing;
+        None means k / fps for frame k from 0."""
+        t = self._handle()
+        if not hasattr(self._lib, "ct_tracker_prime"):
+            raise CtrackError(_abi.ERROR_UNSUPPORTED,
+                              "this libctrack has no ct_tracker_prime (before 0.9.0)")
+        frames = list(frames)
+        if not frames:
+            raise ValueError("frames: priming takes at least one frame")
+        if timestamps is None:
+            timestamps = [k / self.fps for k in range(len(frames))]
+        timestamps = list(timestamps)
+        if len(timestamps) != len(frames):
+            raise ValueError("timestamps: %d for %d frames" % (len(timestamps), len(frames)))
+        arr = (_abi.Frame * len(frames))()
+        keep = []
+        for k, (frame, ts) in enumerate(zip(frames, timestamps)):
+            if frame is None:
+                raise ValueError("frames[%d]: None; priming learns from the pixels" % k)
+            f = arr[k]
+            self._lib.ct_frame_default(ctypes.byref(f), ctypes.sizeof(f))
+            keep.append(self._fill_frame(f, frame, format))
+            f.timestamp_us = _microseconds(ts, "timestamps[%d]" % k)
+        self._check(self._lib.ct_tracker_prime(t, arr, len(frames)))
+        del keep
+        self._last_ts = None
+        self._size = (arr[0].width, arr[0].height)
+
     def feed(self, frame=None, detections=None, timestamp=None, format=None):
         """Runs one step and returns the reported tracks (TRACK_DTYPE).
 
@@ -240,14 +288,7 @@ class Tracker:
             ts = 0.0 if self._last_ts is None else self._last_ts + 1.0 / self.fps
         else:
             ts = float(timestamp)
-            if not math.isfinite(ts):
-                raise ValueError("timestamp: %r is not finite" % (timestamp,))
-        us = int(round(ts * 1e6))
-        if not -2**63 <= us < 2**63:
-            # ctypes would wrap it round silently
-            raise ValueError("timestamp: %r s is outside int64 microseconds "
-                             "(about +-292,000 years)" % (ts,))
-        f.timestamp_us = us
+        f.timestamp_us = _microseconds(ts, "timestamp")
         ptr = dets.ctypes.data if len(dets) else None
         self._check(self._lib.ct_tracker_feed(t, ctypes.byref(f), ptr, len(dets)))
         del keep

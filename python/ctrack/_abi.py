@@ -23,6 +23,9 @@ SOURCE_DETECTIONS = 0
 SOURCE_PIXELS = 1
 PEDESTRIAN_TEMPLATE = 0
 PEDESTRIAN_SIZE = 1
+# The seconds of a recording's start that ct-track and ctrack.batch prime on
+# by default (CT_PRIME_SECONDS; ct_tracker_prime()).
+PRIME_SECONDS = 3.0
 
 
 def fourcc(s):
@@ -209,6 +212,8 @@ def declare(lib):
     # Added in 0.9.0: declared where the library has it.
     if hasattr(lib, "ct_tracker_get_person_size"):
         sig["ct_tracker_get_person_size"] = (C.c_int, [C.c_void_p, P(PersonSize)])
+    if hasattr(lib, "ct_tracker_prime"):
+        sig["ct_tracker_prime"] = (C.c_int, [C.c_void_p, P(Frame), C.c_size_t])
     if hasattr(lib, "ct_tracker_create_with_allocator"):
         sig["ct_tracker_create_with_allocator"] = (C.c_int, [P(Config), P(Allocator),
                                                              P(C.c_void_p)])

@@ -25,6 +25,11 @@ a rerun skips the inputs whose output is there (--force tracks them again).
 A failed input (unreadable, truncated, bad detections) is reported in the
 summary and the others go on.
 
+Where the tracker reads a background (from the pixels alone, or with
+verify_detections), it first learns it from each video's first 3 seconds
+(--prime SECONDS, 0 for none; ct_tracker_prime()), as ct-track does: the
+people there from the first frame are found from it.
+
 From Python:
 
     from ctrack.batch import run
@@ -41,12 +46,15 @@ dependency (pip install ray).
 import argparse
 import configparser
 import csv
+import itertools
 import math
 import os
 import sys
 import time
 
 import numpy as np
+
+from . import PRIME_SECONDS
 
 VIDEO_EXTENSIONS = {".mp4", ".mkv", ".avi", ".mov", ".webm", ".y4m", ".mpg", ".mpeg", ".ts",
                     ".m4v", ".mts", ".flv", ".wmv", ".ogv", ".h264", ".h265", ".hevc", ".mjpeg"}
@@ -254,6 +262,17 @@ def track_one(job, outdir, params=None, library=None, force=False):
             params.setdefault("source", ctrack.SOURCE_PIXELS)
         with ctrack.Tracker(fps=rate[0] / rate[1], library=library, image_size=image_size,
                             **params) as t, open(tmp, "w") as f:
+            prime = job.get("prime", ctrack.PRIME_SECONDS)
+            if (job["video"] and prime > 0 and
+                    (t.config["source"] == ctrack.SOURCE_PIXELS or
+                     t.config["verify_detections"])):
+                # As ct-track --prime: the first ceil(prime * rate) frames.
+                n = math.ceil(prime * rate[0] / rate[1])
+                start = list(itertools.islice(frame_iter, n))
+                if start:
+                    t.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
+                            format="i420")
+                frame_iter = itertools.chain(start, frame_iter)
             for k, frame in enumerate(frame_iter, 1):
                 tracks = t.feed(frame, dets.get(k), timestamp=frame_time(k, rate),
                                 format="i420" if frame is not None else None)
@@ -347,14 +366,21 @@ def _local_tasks(jobs, outdir, params, library, force, workers):
 
 
 def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force=False,
-        pixels_only=False, size=None, fps=None, progress=None):
+        pixels_only=False, size=None, fps=None, progress=None, prime=None):
     """Tracks every input into outdir (see the module's help) and returns
     the summary rows, in the inputs' order. workers: processes (default:
     the cores); ray: None for a local process pool, True to use the Ray
     session this process already opened, or an address for ray.init
     ("auto", "local", "ray://host:10001"); params: ct_config fields;
-    progress: None (on a terminal), True or False."""
+    progress: None (on a terminal), True or False; prime: the seconds of each
+    video a tracker that reads a background learns it from first (default
+    ctrack.PRIME_SECONDS, 0 for none)."""
     jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
+    if prime is not None:
+        if not (isinstance(prime, (int, float)) and math.isfinite(prime) and prime >= 0):
+            raise BatchError("prime: %r is not a duration in seconds" % (prime,))
+        for j in jobs:
+            j["prime"] = float(prime)
     os.makedirs(outdir, exist_ok=True)
     if ray:
         tasks = _ray_tasks(jobs, outdir, params, library, force, ray, workers)
@@ -417,6 +443,9 @@ def main(argv=None):
     ap.add_argument("-r", "--fps", type=float, metavar="RATE",
                     help="frame rate: of detections files without a seqinfo.ini, and "
                          "instead of each video's own")
+    ap.add_argument("--prime", type=float, metavar="SECONDS",
+                    help="learn the background from each video's first SECONDS before "
+                         "tracking it (default %g; 0: no)" % PRIME_SECONDS)
     ap.add_argument("--force", action="store_true",
                     help="track again the inputs whose output is already there")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress")
@@ -431,7 +460,7 @@ def main(argv=None):
     try:
         rows = run(a.inputs, a.output, workers=a.workers, ray=a.ray, params=dict(a.param),
                    force=a.force, pixels_only=a.pixels_only, size=a.size, fps=a.fps,
-                   progress=progress)
+                   progress=progress, prime=a.prime)
     except BatchError as e:
         print("ctrack.batch: %s" % e, file=sys.stderr)
         return 2

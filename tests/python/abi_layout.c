@@ -74,12 +74,12 @@ int main(void)
            "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "
            "\"FORMAT_RGB24\": %u, \"SOURCE_DETECTIONS\": %d, \"SOURCE_PIXELS\": %d, "
            "\"TRACK_TENTATIVE\": %d, \"TRACK_CONFIRMED\": %d, \"TRACK_LOST\": %d, "
-           "\"PEDESTRIAN_TEMPLATE\": %d, \"PEDESTRIAN_SIZE\": %d",
+           "\"PEDESTRIAN_TEMPLATE\": %d, \"PEDESTRIAN_SIZE\": %d, \"PRIME_SECONDS\": %.17g",
            (unsigned)CT_FORMAT_NONE, (unsigned)CT_FORMAT_I420, (unsigned)CT_FORMAT_NV12,
            (unsigned)CT_FORMAT_GRAY8, (unsigned)CT_FORMAT_BGR24, (unsigned)CT_FORMAT_RGB24,
            (int)CT_SOURCE_DETECTIONS, (int)CT_SOURCE_PIXELS, (int)CT_TRACK_TENTATIVE,
            (int)CT_TRACK_CONFIRMED, (int)CT_TRACK_LOST, (int)CT_PEDESTRIAN_TEMPLATE,
-           (int)CT_PEDESTRIAN_SIZE);
+           (int)CT_PEDESTRIAN_SIZE, (double)CT_PRIME_SECONDS);
     printf("}}\n");
     return 0;
 }

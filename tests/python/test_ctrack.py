@@ -1,5 +1,6 @@
 """The Python binding through the real shared library."""
 import configparser
+import math
 import os
 import subprocess
 
@@ -197,6 +198,63 @@ def test_timestamps():
         t.feed(None, None, timestamp=9.2e12)  # the largest that fits, nearly
         t.reset()
         assert len(t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=0.0)) == 1
+
+
+def test_primed_on_real_frames_as_ct_track():
+    """TUD-Campus from the pixels alone, primed on its first PRIME_SECONDS
+    (ct_tracker_prime()): the binding gives exactly what ct-track writes
+    reading the same frames from standard input (which primes by default),
+    and both find more of the people of its first second than a tracker fed
+    live."""
+    n, fps, w, h = seqinfo("TUD-Campus")
+    video = os.path.join(DATA, "TUD-Campus", "video.mp4")
+    raw = subprocess.run(["ffmpeg", "-v", "error", "-i", video, "-f", "rawvideo",
+                          "-pix_fmt", "yuv420p", "-"], check=True, capture_output=True).stdout
+    frames = np.frombuffer(raw, np.uint8).reshape(-1, h * 3 // 2, w)
+    start = frames[:math.ceil(ctrack.PRIME_SECONDS * fps)]
+
+    def track(primed):
+        lines = []
+        with ctrack.Tracker(fps=fps, source=ctrack.SOURCE_PIXELS) as t:
+            if primed:
+                t.prime(start, format="i420")
+            for k, f in enumerate(frames, 1):
+                lines += ctrack.mot_lines(k, t.feed(f, format="i420", timestamp=(k - 1) / fps))
+        return lines
+    primed, live = track(True), track(False)
+    y4m = subprocess.run(["ffmpeg", "-v", "error", "-i", video, "-f", "yuv4mpegpipe",
+                          "-pix_fmt", "yuv420p", "-"], check=True, capture_output=True).stdout
+    out = subprocess.run([os.environ["CTRACK_CT_TRACK"], "-q", "-"], input=y4m, check=True,
+                         capture_output=True).stdout.decode()
+    assert primed == out.splitlines()
+    out = subprocess.run([os.environ["CTRACK_CT_TRACK"], "-q", "--prime", "0", "-"],
+                         input=y4m, check=True, capture_output=True).stdout.decode()
+    assert live == out.splitlines()
+
+    def first_second(lines):
+        return sum(int(line.split(",")[0]) <= fps for line in lines)
+    assert first_second(primed) >= 2 * first_second(live) > 0
+
+
+def test_bad_priming_raises_and_changes_nothing():
+    frame = np.full((48 * 3 // 2, 64), 128, np.uint8)
+    with ctrack.Tracker(source=ctrack.SOURCE_PIXELS) as t:
+        with pytest.raises(ValueError, match="at least one"):
+            t.prime([])
+        with pytest.raises(ValueError, match="None"):
+            t.prime([frame, None], format="i420")
+        with pytest.raises(ValueError, match="timestamps"):
+            t.prime([frame, frame], [0.0], format="i420")
+        with pytest.raises(ValueError, match="not finite"):
+            t.prime([frame, frame], [0.0, float("nan")], format="i420")
+        with pytest.raises(ctrack.CtrackError, match=r"frames\[1\].*does not increase"):
+            t.prime([frame, frame], [0.0, 0.0], format="i420")
+        small = np.full((24 * 3 // 2, 32), 128, np.uint8)
+        with pytest.raises(ctrack.CtrackError, match=r"frames\[1\].*another format or size"):
+            t.prime([frame, small], format="i420")
+        t.feed(frame, format="i420", timestamp=1.0)
+        t.prime([frame, frame], format="i420")
+        t.feed(frame, format="i420", timestamp=0.0)  # the time was forgotten
 
 
 def test_bad_input_raises_and_changes_nothing():

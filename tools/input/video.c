@@ -25,6 +25,11 @@ struct video_input {
     size_t pending_len, pending_pos;
     long long frame_index;
     long header_bytes; /* Y4M: the header line's */
+    /* video_keep() and video_replay(): the first frames read, kept (up to
+     * keep_max), and how many of them were replayed. */
+    uint8_t *kept;
+    long long keep_max, kept_n, replayed;
+    int replaying;
 };
 
 size_t frame_bytes(uint32_t format, int width, int height)
@@ -260,8 +265,64 @@ int video_open(const char *path, const video_params *params, video_input **out,
     return 0;
 }
 
+/* The frame in buf as a ct_frame. */
+static void describe(const video_input *in, const uint8_t *buf, ct_frame *frame)
+{
+    ct_frame_default(frame, sizeof *frame);
+    frame->format = in->format;
+    frame->width = in->width;
+    frame->height = in->height;
+    const int cw = (in->width + 1) / 2, ch = (in->height + 1) / 2;
+    const size_t luma = (size_t)in->width * (size_t)in->height;
+    frame->planes[0] = buf;
+    frame->strides[0] = in->width;
+    if (in->format == CT_FORMAT_I420) {
+        frame->planes[1] = buf + luma;
+        frame->planes[2] = buf + luma + (size_t)cw * ch;
+        frame->strides[1] = frame->strides[2] = cw;
+    } else if (in->format == CT_FORMAT_NV12) {
+        frame->planes[1] = buf + luma;
+        frame->strides[1] = 2 * cw;
+    }
+}
+
+int video_keep(video_input *in, long long frames, char *err, size_t err_len)
+{
+    if (in->frame_index != 0 || in->kept || frames < 1) {
+        snprintf(err, err_len, "frames can be kept only from the first, and once");
+        return -1;
+    }
+    if ((unsigned long long)frames > SIZE_MAX / in->frame_bytes ||
+        !(in->kept = malloc((size_t)frames * in->frame_bytes))) {
+        snprintf(err, err_len, "cannot keep %lld frames of %zu bytes in memory", frames,
+                 in->frame_bytes);
+        return -1;
+    }
+    in->keep_max = frames;
+    return 0;
+}
+
+int video_kept(video_input *in, long long i, ct_frame *frame)
+{
+    if (i < 0 || i >= in->kept_n)
+        return 0;
+    describe(in, in->kept + (size_t)i * in->frame_bytes, frame);
+    return 1;
+}
+
+long long video_replay(video_input *in)
+{
+    in->replaying = 1;
+    in->replayed = 0;
+    return in->kept_n;
+}
+
 int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len)
 {
+    if (in->replaying && in->replayed < in->kept_n) {
+        describe(in, in->kept + (size_t)in->replayed++ * in->frame_bytes, frame);
+        return 1;
+    }
     if (in->y4m) {
         char line[Y4M_MAX_LINE];
         long len = read_line(in, line, sizeof line);
@@ -287,23 +348,11 @@ int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len)
         return -1;
     }
     in->frame_index++;
-
-    ct_frame_default(frame, sizeof *frame);
-    frame->format = in->format;
-    frame->width = in->width;
-    frame->height = in->height;
-    const int cw = (in->width + 1) / 2, ch = (in->height + 1) / 2;
-    const size_t luma = (size_t)in->width * (size_t)in->height;
-    frame->planes[0] = in->buf;
-    frame->strides[0] = in->width;
-    if (in->format == CT_FORMAT_I420) {
-        frame->planes[1] = in->buf + luma;
-        frame->planes[2] = in->buf + luma + (size_t)cw * ch;
-        frame->strides[1] = frame->strides[2] = cw;
-    } else if (in->format == CT_FORMAT_NV12) {
-        frame->planes[1] = in->buf + luma;
-        frame->strides[1] = 2 * cw;
+    if (!in->replaying && in->kept_n < in->keep_max) {
+        uint8_t *copy = in->kept + (size_t)in->kept_n++ * in->frame_bytes;
+        memcpy(copy, in->buf, in->frame_bytes);
     }
+    describe(in, in->buf, frame);
     return 1;
 }
 
@@ -313,6 +362,7 @@ void video_close(video_input *in)
         return;
     if (in->owns_file && in->f)
         fclose(in->f);
+    free(in->kept);
     free(in->buf);
     free(in);
 }

@@ -46,6 +46,16 @@ int video_open(const char *path, const video_params *params, video_input **out,
  * an error with a message in err (a truncated frame is an error). */
 int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len);
 
+/* Keeps a copy of the next `frames` frames read (from the first), for
+ * video_replay(). Returns 0, or -1 with a message in err (too many for
+ * memory, or frames already read). */
+int video_keep(video_input *in, long long frames, char *err, size_t err_len);
+
+/* From the next read on, the kept frames are read again, then the input
+ * goes on where it was. Returns how many frames were kept. */
+long long video_replay(video_input *in);
+int video_kept(video_input *in, long long i, ct_frame *frame);
+
 void video_close(video_input *in);
 
 /* Bytes of one frame of the given format and size (0 for bad values). */
