@@ -276,7 +276,7 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     });
 }
 
-int ct_tracker_prime(ct_tracker *tracker, const ct_frame *frames, size_t n)
+int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t n)
 {
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
@@ -294,7 +294,9 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *frames, size_t n)
         ctrack::Vec<ct_frame> loaded(n);
         for (size_t i = 0; i < n; i++) {
             char why[400];
-            const int st = ctrack::load_frame(&frames[i], &loaded[i], why, sizeof why);
+            if (!frames[i])
+                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "frames[%zu]: NULL", i);
+            const int st = ctrack::load_frame(frames[i], &loaded[i], why, sizeof why);
             const ct_frame &f = loaded[i], &f0 = loaded[0];
             if (st != CT_OK)
                 return ctrack::fail(msg, len, st, "frames[%zu]: %s", i, why);

@@ -74,9 +74,10 @@ void median_frame(const ct_frame *frames, size_t n, PackedFrame *median)
     for (int p = 0; p < planes; p++)
         widest = std::max(widest, ps[p].row_bytes);
     // The k rows of a row, copied, then ordered in place byte by byte: a
-    // bubble pass takes each byte's largest to the top, and (k + 1) / 2
-    // passes leave each byte's median at row (k - 1) / 2. Each comparison
-    // runs along the row, where the compiler vectorises it.
+    // bubble pass takes each byte's largest of the rows below the ones
+    // already passed to the top, so k - k / 2 passes leave rows k / 2 and
+    // up in order, and row k / 2 the median (the upper one of an even k).
+    // Each comparison runs along the row, where the compiler vectorises it.
     Vec<uint8_t> rows(k * widest);
     for (int p = 0; p < planes; p++) {
         const size_t len = ps[p].row_bytes;
@@ -84,7 +85,7 @@ void median_frame(const ct_frame *frames, size_t n, PackedFrame *median)
             for (size_t j = 0; j < k; j++)
                 std::copy(row(*picked[j], p, y), row(*picked[j], p, y) + len,
                           rows.data() + j * len);
-            for (size_t pass = 0; pass < (k + 1) / 2; pass++)
+            for (size_t pass = 0; pass < k - k / 2; pass++)
                 for (size_t j = 0; j + 1 < k - pass; j++) {
                     uint8_t *a = rows.data() + j * len, *b = a + len;
                     for (size_t x = 0; x < len; x++) {
@@ -93,7 +94,7 @@ void median_frame(const ct_frame *frames, size_t n, PackedFrame *median)
                         b[x] = hi;
                     }
                 }
-            std::copy(rows.data() + (k - 1) / 2 * len, rows.data() + (k + 1) / 2 * len,
+            std::copy(rows.data() + k / 2 * len, rows.data() + (k / 2 + 1) * len,
                       const_cast<uint8_t *>(row(m, p, y)));
         }
     }

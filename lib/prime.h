@@ -38,9 +38,10 @@ private:
     ct_frame frame_{};
 };
 
-// Into `median`, each byte's median over frames[j] for the (at most
-// kPrimeMedianFrames) j that median_frames() picks. Frames are validated,
-// of one size and format, n >= 1.
+// Into `median`, each byte's median over the frames, or over
+// kPrimeMedianFrames of them evenly spaced when there are more (of an even
+// count, the upper of the two middle values). Frames are validated, of one
+// size and format, n >= 1.
 void median_frame(const ct_frame *frames, size_t n, PackedFrame *median);
 
 // Into `out`, `frame` with every byte that differs from the median's by more

@@ -318,7 +318,9 @@ START_TEST(prime_with_the_host_allocator)
     ck_assert_msg(video_open(tud_video, &ip, &in, &info, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(video_keep(in, kFrames, err, sizeof err), 0);
     ct_frame frames[kFrames];
+    const ct_frame *pf[kFrames];
     for (int k = 0; k < kFrames; k++) {
+        pf[k] = &frames[k];
         ck_assert_int_eq(video_read(in, &frames[k], err, sizeof err), 1);
         ck_assert_int_eq(video_kept(in, k, &frames[k]), 1);
         frames[k].timestamp_us = k * 40000;
@@ -348,7 +350,7 @@ START_TEST(prime_with_the_host_allocator)
     const auto live = run(ref, nullptr);
     ct_tracker_destroy(ref);
     ck_assert_int_eq(ct_tracker_create(&cfg, &ref), CT_OK);
-    ck_assert_int_eq(ct_tracker_prime(ref, frames, kFrames), CT_OK);
+    ck_assert_int_eq(ct_tracker_prime(ref, pf, kFrames), CT_OK);
     const auto primed = run(ref, nullptr);
     ct_tracker_destroy(ref);
     size_t n_primed = 0, n_live = 0;
@@ -364,7 +366,7 @@ START_TEST(prime_with_the_host_allocator)
         ct_tracker *t = nullptr;
         ck_assert_int_eq(ct_tracker_create_with_allocator(&cfg, &a, &t), CT_OK);
         host.fail_countdown = k;
-        const int st = watched(host, [&] { return ct_tracker_prime(t, frames, kFrames); });
+        const int st = watched(host, [&] { return ct_tracker_prime(t, pf, kFrames); });
         const bool refused = host.fail_countdown < 0;
         host.fail_countdown = -1;
         if (!refused) {

@@ -992,16 +992,18 @@ START_TEST(small_divisions_are_exact)
     ck_assert_int_eq(wrong, 0);
 }
 
-// A recording's background for ct_tracker_prime(): over 9 frames of a
-// noisy scene (each byte +-1 around it) that a bright block crosses, each
+// A recording's background for ct_tracker_prime(): over 9 or 8 frames of
+// a noisy scene (each byte +-1 around it) that a bright block crosses, each
 // byte's median is the scene within the noise, block or not; a frame
 // cleaned against it has the block put back to the median and keeps its
 // own bytes, noise and all, everywhere else. In I420 (the chroma planes
-// too) and packed BGR.
+// too) and packed BGR. Over 2 to 40 frames of random bytes, the median is
+// each byte's (the upper middle value of an even count), over 31 of them
+// evenly spaced past 31.
 START_TEST(a_recordings_median_and_its_cleaned_frames)
 {
-    const uint32_t format = _i == 0 ? CT_FORMAT_I420 : CT_FORMAT_BGR24;
-    const int w = 64, h = 48, n = 9;
+    const uint32_t format = _i % 2 == 0 ? CT_FORMAT_I420 : CT_FORMAT_BGR24;
+    const int w = 64, h = 48, n = _i < 2 ? 9 : 8;
     const size_t bytes = format == CT_FORMAT_I420 ? (size_t)w * h * 3 / 2 : (size_t)w * h * 3;
     std::vector<std::vector<uint8_t>> buf(n, std::vector<uint8_t>(bytes));
     std::vector<ct_frame> frames(n);
@@ -1054,7 +1056,35 @@ START_TEST(a_recordings_median_and_its_cleaned_frames)
             if (in_block(k, i))
                 ck_assert_uint_eq(c[i], m[i]);
             else
-                ck_assert_msg(c[i] == buf[k][i], "frame %d byte %zu: %d, not %d (median %d)", k, i, c[i], buf[k][i], m[i]);
+                ck_assert_msg(c[i] == buf[k][i], "frame %d byte %zu: %d, not %d (median %d)", k,
+                              i, c[i], buf[k][i], m[i]);
+        }
+    }
+    // Random bytes: the median against a sort, every count to 40.
+    uint32_t seed = 12345u + (uint32_t)_i;
+    for (int count = 1; count <= 40; count++) {
+        std::vector<std::vector<uint8_t>> rnd(count, std::vector<uint8_t>(bytes));
+        std::vector<ct_frame> rf(frames.begin(), frames.begin() + 1);
+        rf.resize(count, frames[0]);
+        for (int k = 0; k < count; k++) {
+            for (uint8_t &b : rnd[k])
+                b = (uint8_t)((seed = seed * 1664525u + 1013904223u) >> 24);
+            rf[k].planes[0] = rnd[k].data();
+            if (format == CT_FORMAT_I420) {
+                rf[k].planes[1] = rnd[k].data() + w * h;
+                rf[k].planes[2] = rnd[k].data() + w * h + w * h / 4;
+            }
+        }
+        median_frame(rf.data(), count, &median);
+        const size_t used = std::min<size_t>(count, kPrimeMedianFrames);
+        const uint8_t *got = median.frame().planes[0];
+        for (size_t i = 0; i < bytes; i += 13) {
+            std::vector<uint8_t> v;
+            for (size_t j = 0; j < used; j++)
+                v.push_back(rnd[(2 * j + 1) * count / (2 * used)][i]);
+            std::sort(v.begin(), v.end());
+            ck_assert_msg(got[i] == v[used / 2], "%d frames, byte %zu: %d, not %d", count, i,
+                          got[i], v[used / 2]);
         }
     }
 }
@@ -1072,7 +1102,7 @@ int main(int argc, char **argv)
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, small_divisions_are_exact);
-    tcase_add_loop_test(tc, a_recordings_median_and_its_cleaned_frames, 0, 2);
+    tcase_add_loop_test(tc, a_recordings_median_and_its_cleaned_frames, 0, 4);
     tcase_add_test(tc, repeated_silhouettes_are_compared_once);
     tcase_add_test(tc, moving_square_is_foreground);
     tcase_add_test(tc, every_column_is_modelled);

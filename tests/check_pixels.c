@@ -935,9 +935,11 @@ START_TEST(a_primed_tracker_finds_who_is_there_from_the_first_frame)
     const uint32_t format = formats[_i];
     static image frames[PRIME_FRAMES];
     ct_frame f[PRIME_FRAMES];
+    const ct_frame *pf[PRIME_FRAMES];
     for (int k = 0; k < PRIME_FRAMES; k++) {
         prime_scene(&frames[k], k);
         f[k] = frame_of(&frames[k], format, k * SEC / 10);
+        pf[k] = &f[k];
     }
     ct_config cfg = pixels_config();
     ct_track out[64];
@@ -952,7 +954,7 @@ START_TEST(a_primed_tracker_finds_who_is_there_from_the_first_frame)
     ct_tracker_destroy(t);
     /* Primed, then fed from the first frame, with timestamps from 5 s. */
     t = test_tracker(&cfg);
-    ck_assert_int_eq(ct_tracker_prime(t, f, PRIME_FRAMES), CT_OK);
+    ck_assert_int_eq(ct_tracker_prime(t, pf, PRIME_FRAMES), CT_OK);
     uint64_t first[2] = {0, 0};
     for (int k = 0; k < PRIME_FRAMES; k++) {
         const size_t n = step_pixels(t, &frames[k], format, 5 * SEC + k * SEC / 10, NULL, 0, out);
@@ -981,9 +983,11 @@ START_TEST(prime_refuses_bad_frames)
 {
     static image frames[3];
     ct_frame f[3];
+    const ct_frame *pf[3];
     for (int k = 0; k < 3; k++) {
         prime_scene(&frames[k], 10 * k);
         f[k] = frame_of(&frames[k], CT_FORMAT_I420, k * SEC / 10);
+        pf[k] = &f[k];
     }
     ct_config cfg = pixels_config();
     ct_tracker *t = test_tracker(&cfg), *ref = test_tracker(&cfg);
@@ -994,31 +998,35 @@ START_TEST(prime_refuses_bad_frames)
         step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
         step_pixels(ref, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, ref_out);
     }
-    ck_assert_int_eq(ct_tracker_prime(NULL, f, 3), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_prime(NULL, pf, 3), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_int_eq(ct_tracker_prime(t, NULL, 3), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "NULL"));
-    ck_assert_int_eq(ct_tracker_prime(t, f, 0), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ct_tracker_prime(t, pf, 0), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "n is 0"));
     struct {
         int index;
-        void (*spoil)(ct_frame *);
         const char *message;
     } cases[] = {
-        {1, NULL, "no pixels"},
-        {2, NULL, "another format or size"},
-        {2, NULL, "does not increase"},
-        {1, NULL, "stride"},
+        {1, "no pixels"},
+        {2, "another format or size"},
+        {2, "does not increase"},
+        {1, "stride"},
+        {2, "NULL"},
+        {0, "frame.size"},
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         ct_frame bad[3] = {f[0], f[1], f[2]};
+        const ct_frame *pbad[3] = {&bad[0], &bad[1], &bad[2]};
         ct_frame *b = &bad[cases[c].index];
         switch (c) {
         case 0: *b = test_frame(b->timestamp_us, W, H); break;
         case 1: b->width = W / 2; b->height = H / 2; b->format = CT_FORMAT_GRAY8; break;
         case 2: b->timestamp_us = bad[1].timestamp_us; break;
         case 3: b->strides[0] = W / 2; break;
+        case 4: pbad[2] = NULL; break;
+        case 5: b->size = 3; break;
         }
-        ck_assert_int_ne(ct_tracker_prime(t, bad, 3), CT_OK);
+        ck_assert_int_ne(ct_tracker_prime(t, pbad, 3), CT_OK);
         ck_assert_msg(strstr(ct_tracker_last_error(t), cases[c].message) &&
                           strstr(ct_tracker_last_error(t), "frames["),
                       "case %zu: '%s'", c, ct_tracker_last_error(t));
@@ -1035,7 +1043,7 @@ START_TEST(prime_refuses_bad_frames)
     }
     /* A good prime forgets the tracks and the time: an earlier timestamp
      * is taken. */
-    ck_assert_int_eq(ct_tracker_prime(t, f, 3), CT_OK);
+    ck_assert_int_eq(ct_tracker_prime(t, pf, 3), CT_OK);
     ck_assert_uint_eq(step_pixels(t, &frames[0], CT_FORMAT_I420, 0, NULL, 0, out), 0);
     ct_tracker_destroy(t);
     ct_tracker_destroy(ref);

@@ -300,27 +300,30 @@ static int prime(run *r)
         return -1;
     }
     ct_frame *frames = malloc((size_t)n * sizeof *frames);
-    if (!frames) {
+    const ct_frame **ptrs = malloc((size_t)n * sizeof *ptrs);
+    if (!frames || !ptrs) {
+        free(frames);
+        free(ptrs);
         fprintf(stderr, "ct-track: out of memory\n");
         return -1;
     }
+    /* A read that fails stops the start here: the frames before it are
+     * primed on and tracked, and the tracking meets the error where a run
+     * without --prime meets it (the reader repeats it). */
     long long got = 0;
-    for (;;) {
-        ct_frame frame, picture;
-        const int st = got < n ? next_frame(r, got + 1, &frame, &picture) : 0;
-        if (st < 0) {
-            free(frames);
-            return -1;
-        }
-        if (st == 0)
+    while (got < n) {
+        ct_frame frame;
+        if (video_read(r->in, &frame, msg, sizeof msg) != 1)
             break;
         got++;
     }
     for (long long i = 0; i < got; i++) {
         video_kept(r->in, i, &frames[i]);
         frames[i].timestamp_us = (int64_t)llround((double)i * 1e6 * r->rate_den / r->rate_num);
+        ptrs[i] = &frames[i];
     }
-    const int st = got > 0 ? ct_tracker_prime(r->tracker, frames, (size_t)got) : CT_OK;
+    const int st = got > 0 ? ct_tracker_prime(r->tracker, ptrs, (size_t)got) : CT_OK;
+    free(ptrs);
     free(frames);
     if (st != CT_OK) {
         fprintf(stderr, "ct-track: --prime: %s: %s\n", ct_status_str(st),

@@ -387,8 +387,9 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
 /* Learns the scene's background from n frames of a recording before
- * tracking it (added in 0.9.0): its first seconds, in order, with increasing
- * timestamps, all with pixels, of one size and format. Each pixel's median
+ * tracking it (added in 0.9.0): *frames[0..n-1], its first seconds, in
+ * order, with increasing timestamps, all with pixels, of one size and
+ * format (each a ct_frame of its own, sized by its own size field). Each pixel's median
  * over them (over 31 of them, evenly spaced, when there are more) is the
  * background behind the people who walk through; the frames, with what
  * differs from it by more than their noise put back to it, then teach the
@@ -401,7 +402,7 @@ CT_API int ct_tracker_reset(ct_tracker *tracker);
  * the call only. Their steps count in ct_stats. When the frames are at fault
  * nothing changes; when memory runs out, the tracker is left as after
  * ct_tracker_reset(). (docs/API.md, "A recording's start".) */
-CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *frames, size_t n);
+CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t n);
 
 /* The seconds of a recording's start that ct-track and the Python batch
  * runner prime on by default (docs/tuning.md, "A recording's start"). */

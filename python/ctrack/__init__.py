@@ -259,7 +259,8 @@ class Tracker:
             self._lib.ct_frame_default(ctypes.byref(f), ctypes.sizeof(f))
             keep.append(self._fill_frame(f, frame, format))
             f.timestamp_us = _microseconds(ts, "timestamps[%d]" % k)
-        self._check(self._lib.ct_tracker_prime(t, arr, len(frames)))
+        ptrs = (ctypes.POINTER(_abi.Frame) * len(frames))(*[ctypes.pointer(f) for f in arr])
+        self._check(self._lib.ct_tracker_prime(t, ptrs, len(frames)))
         del keep
         self._last_ts = None
         self._size = (arr[0].width, arr[0].height)

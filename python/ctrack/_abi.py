@@ -213,7 +213,7 @@ def declare(lib):
     if hasattr(lib, "ct_tracker_get_person_size"):
         sig["ct_tracker_get_person_size"] = (C.c_int, [C.c_void_p, P(PersonSize)])
     if hasattr(lib, "ct_tracker_prime"):
-        sig["ct_tracker_prime"] = (C.c_int, [C.c_void_p, P(Frame), C.c_size_t])
+        sig["ct_tracker_prime"] = (C.c_int, [C.c_void_p, P(P(Frame)), C.c_size_t])
     if hasattr(lib, "ct_tracker_create_with_allocator"):
         sig["ct_tracker_create_with_allocator"] = (C.c_int, [P(Config), P(Allocator),
                                                              P(C.c_void_p)])

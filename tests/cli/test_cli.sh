@@ -123,6 +123,30 @@ else
         -d "$tud/det/det.txt" "$tmp/tud.y4m"
     expect "pixels only from standard input" 0 "" -- sh -c "'$ct' -q - < '$tmp/tud.y4m' > '$tmp/px2.txt'"
     same "pixels only, file and standard input" "$tmp/px.txt" "$tmp/px2.txt"
+    # --prime: the first 3 s by default (all 71 frames here), as far past
+    # the video's end as asked; 0 tracks it live, which differs.
+    expect "--prime past the end" 0 "" -- "$ct" -q --prime 100 -o "$tmp/px100.txt" "$tmp/tud.y4m"
+    same "--prime past the end tracks" "$tmp/px100.txt" "$tmp/px.txt"
+    expect "--prime 0" 0 "" -- "$ct" -q --prime 0 -o "$tmp/px0.txt" "$tmp/tud.y4m"
+    if cmp -s "$tmp/px0.txt" "$tmp/px.txt"; then bad "--prime 0 tracks live" "same tracks as primed"; else ok "--prime 0 tracks live"; fi
+    expect "--prime 0 from standard input" 0 "" -- sh -c "'$ct' -q --prime 0 - < '$tmp/tud.y4m' > '$tmp/px0s.txt'"
+    same "--prime 0, file and standard input" "$tmp/px0.txt" "$tmp/px0s.txt"
+    expect "--prime with detections alone: nothing to prime" 0 "" -- "$ct" -q --prime 2 \
+        -d "$tud/det/det.txt" -o "$tmp/y4m-prime.txt" "$tmp/tud.y4m"
+    same "--prime with detections: the same tracks" "$tmp/y4m-prime.txt" "$tmp/y4m.txt"
+    # A frame cut short inside the primed seconds: the frames before it are
+    # tracked and written, and the error comes where it does unprimed.
+    expect "truncated y4m, pixels only, primed" 1 "truncated frame 71" -- "$ct" -q \
+        -o "$tmp/cutpx.txt" "$tmp/cut.y4m"
+    [ "$(grep -c 'truncated frame 71' "$tmp/err")" = 1 ] && ok "truncated y4m, primed: said once" \
+        || bad "truncated y4m, primed: said once" "$(cat "$tmp/err")"
+    expect "truncated y4m, pixels only, live" 1 "truncated frame 71" -- "$ct" -q --prime 0 \
+        -o "$tmp/cutpx0.txt" "$tmp/cut.y4m"
+    if [ "$(cut -d, -f1 "$tmp/cutpx.txt" | sort -n | tail -1)" = 70 ]; then
+        ok "truncated y4m, primed: frames 1-70 written"
+    else
+        bad "truncated y4m, primed: frames 1-70 written" "last frame $(cut -d, -f1 "$tmp/cutpx.txt" | sort -n | tail -1)"
+    fi
 
     # Pictures: --overlay writes every frame, as I420 Y4M of the input's size and rate.
     expect "overlay" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -o /dev/null --overlay "$tmp/ov.y4m" "$tmp/tud.y4m"
@@ -257,6 +281,9 @@ expect "bad format" 2 "--format" -- "$ct" -d "$tud/det/det.txt" -f yuyv
 expect "bad fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r 0
 expect "nan fps" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r nan
 expect "fps too slow" 2 "--fps" -- "$ct" -d "$tud/det/det.txt" -r 0.0001
+for v in -1 nan x 3601 ""; do
+    expect "bad --prime '$v'" 2 "--prime" -- "$ct" --prime "$v" "$tmp/tiny.y4m"
+done
 expect "unknown parameter" 2 "unknown parameter 'bogus'" -- "$ct" -d "$tud/det/det.txt" -p bogus=1
 expect "parameter without value" 2 "NAME=VALUE" -- "$ct" -d "$tud/det/det.txt" -p min_hits
 expect "parameter not a number" 2 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -p min_hits=2.5

@@ -396,7 +396,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t last_n = 0;
     Output before = output_of(a);
     for (int step = 0; step < 48 && in.remaining_bytes() > 0; step++) {
-        const int op = in.ConsumeIntegralInRange<int>(0, 9);
+        const int op = in.ConsumeIntegralInRange<int>(0, 10);
         if (op <= 6) {
             Frame fr;
             const int64_t last_clock = clock;
@@ -444,9 +444,35 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             std::memcpy(sbuf.data(), &claimed, sizeof claimed);
             const int rs = ct_tracker_get_stats(a, (ct_stats *)sbuf.data());
             CHECK(rs == CT_OK || rs == CT_ERROR_INVALID_ARGUMENT);
-        } else {
+        } else if (op == 9) {
             shape[0] = in.ConsumeIntegralInRange<int>(8, 96);
             shape[1] = in.ConsumeIntegralInRange<int>(8, 96);
+        } else {
+            // Priming on a few fuzzed frames (any of them NULL, without
+            // pixels, of other sizes, out of order): refused with nothing
+            // changed, or the tracks and the time forgotten, in both
+            // trackers alike.
+            const size_t n = in.ConsumeIntegralInRange<size_t>(0, 4);
+            std::vector<Frame> frames(n);
+            std::vector<const ct_frame *> ptrs(n);
+            int64_t prime_clock = clock;
+            for (size_t i = 0; i < n; i++) {
+                fuzz_frame(in, &frames[i], &prime_clock, shape);
+                ptrs[i] = in.ConsumeIntegralInRange<int>(0, 31) == 0
+                              ? nullptr
+                              : frames[i].header.as<ct_frame>();
+            }
+            const ct_frame *const *pp = n && in.ConsumeBool() ? ptrs.data() : nullptr;
+            const int r = ct_tracker_prime(a, pp, n);
+            CHECK(r == CT_OK || r == CT_ERROR_INVALID_ARGUMENT || r == CT_ERROR_UNSUPPORTED);
+            if (r == CT_OK) {
+                CHECK(ct_tracker_prime(b, pp, n) == CT_OK);
+                before = output_of(a);
+                CHECK(before.tracks.empty() && before.candidates.empty());
+                CHECK(same(before, output_of(b)));
+            } else {
+                CHECK(ct_tracker_last_error(a)[0] != '\0');
+            }
         }
         CHECK(same(before, output_of(a)));
     }

@@ -6,10 +6,13 @@
 // has the size and format the header gave and strides that hold a row, its
 // planes are readable to their last byte (AddressSanitizer checks the read
 // below), the frame count of a regular file is what is read, and a
-// truncated frame is an error, never a frame.
+// truncated frame is an error, never a frame. The spare byte keeps up to 4
+// of the first frames (ct-track --prime): at the end they are replayed,
+// equal to what was read, and the end (or the error) comes again.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "fuzz.h"
 #include "video.h"
@@ -38,7 +41,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     CHECK(in && info.width >= 1 && info.height >= 1);
     const size_t bytes = frame_bytes(info.format, info.width, info.height);
     CHECK(bytes > 0);
-    long long frames = 0;
+    const long long keep = bytes <= (1u << 22) ? data[3] % 5 : 0; // within the fuzzer's memory
+    if (keep > 0)
+        CHECK(video_keep(in, keep, err, sizeof err) == 0);
+    std::vector<unsigned> sums; // of each frame read, up to keep
+    long long frames = 0, replayed = -1;
+    int end = 2;
     unsigned sum = 0;
     for (;;) {
         ct_frame f;
@@ -48,11 +56,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (r != 1) {
             if (r == -1)
                 CHECK(err[0] != '\0');
-            else if (info.frames >= 0)
+            else if (info.frames >= 0 && replayed < 0)
                 CHECK(frames == info.frames);
+            if (replayed < 0 && keep > 0) {
+                CHECK(video_replay(in) == (long long)sums.size());
+                replayed = 0;
+                end = r;
+                continue;
+            }
+            if (replayed >= 0)
+                CHECK(r == end && replayed == (long long)sums.size());
             break;
         }
-        frames++;
+        if (replayed >= 0)
+            CHECK(replayed < (long long)sums.size());
+        else
+            frames++;
         CHECK(f.width == info.width && f.height == info.height && f.format == info.format);
         const int cw = (f.width + 1) / 2, ch = (f.height + 1) / 2;
         int planes = 1, row[3] = {f.width, 0, 0}, rows[3] = {f.height, 0, 0};
@@ -61,12 +80,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else if (f.format == CT_FORMAT_NV12) {
             planes = 2; row[1] = 2 * cw; rows[1] = ch;
         }
+        unsigned this_sum = 0;
         for (int p = 0; p < planes; p++) {
             CHECK(f.planes[p] && f.strides[p] >= row[p]);
             for (int y = 0; y < rows[p]; y++)
                 for (int x = 0; x < row[p]; x++)
-                    sum += f.planes[p][(size_t)y * f.strides[p] + x];
+                    this_sum = this_sum * 31 + f.planes[p][(size_t)y * f.strides[p] + x];
         }
+        sum += this_sum;
+        if (replayed >= 0)
+            CHECK(sums[(size_t)replayed++] == this_sum);
+        else if ((long long)sums.size() < keep)
+            sums.push_back(this_sum);
     }
     video_close(in);
     return (int)(sum & 0); // the reads are the check

@@ -92,6 +92,30 @@ def env():
     return e
 
 
+def test_priming_as_ct_track(tmp_path):
+    """prime=0: a video from the pixels is tracked live, as ct-track --prime 0
+    tracks it, which differs from the default (primed on 3 seconds); a
+    duration that is not one is refused before anything runs."""
+    video = os.path.join(DATA, "TUD-Campus", "video.mp4")
+    y4m = str(tmp_path / "tud.y4m")
+    subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video, "-f", "yuv4mpegpipe", y4m],
+                   check=True)
+    live = subprocess.run([CT_TRACK, "-q", "--prime", "0", y4m], check=True,
+                          capture_output=True).stdout
+    primed = subprocess.run([CT_TRACK, "-q", y4m], check=True, capture_output=True).stdout
+    assert live != primed
+    rows = batch.run([video], str(tmp_path / "live"), workers=1, progress=False,
+                     pixels_only=True, prime=0)
+    assert rows[0]["status"] == "ok", rows[0]
+    assert read(rows[0]["output"]) == live
+    for bad in (-1, float("nan"), "3"):
+        with pytest.raises(batch.BatchError, match="prime"):
+            batch.run([video], str(tmp_path / "bad"), workers=1, progress=False, prime=bad)
+    r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "--prime", "x", "-o",
+                        str(tmp_path / "bad"), video], capture_output=True, text=True, env=env())
+    assert r.returncode == 2 and "--prime" in r.stderr
+
+
 def test_broken_inputs_are_reported_and_the_rest_complete(tmp_path, expected):
     src = tmp_path / "in"
     src.mkdir()

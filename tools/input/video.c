@@ -30,6 +30,10 @@ struct video_input {
     uint8_t *kept;
     long long keep_max, kept_n, replayed;
     int replaying;
+    /* A failed read fails every read after it (after the kept frames, when
+     * replaying), with its message. */
+    int failed;
+    char error[256];
 };
 
 size_t frame_bytes(uint32_t format, int width, int height)
@@ -286,6 +290,8 @@ static void describe(const video_input *in, const uint8_t *buf, ct_frame *frame)
     }
 }
 
+static int read_frame(video_input *in, ct_frame *frame, char *err, size_t err_len);
+
 int video_keep(video_input *in, long long frames, char *err, size_t err_len)
 {
     if (in->frame_index != 0 || in->kept || frames < 1) {
@@ -323,6 +329,22 @@ int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len)
         describe(in, in->kept + (size_t)in->replayed++ * in->frame_bytes, frame);
         return 1;
     }
+    if (in->failed) {
+        snprintf(err, err_len, "%s", in->error);
+        return -1;
+    }
+    const int got = read_frame(in, frame, err, err_len);
+    if (got < 0) {
+        in->failed = 1;
+        snprintf(in->error, sizeof in->error, "%s", err);
+    }
+    return got;
+}
+
+/* The next frame from the input itself (video_read() without the replay and
+ * the sticky error). */
+static int read_frame(video_input *in, ct_frame *frame, char *err, size_t err_len)
+{
     if (in->y4m) {
         char line[Y4M_MAX_LINE];
         long len = read_line(in, line, sizeof line);

@@ -43,7 +43,8 @@ int video_open(const char *path, const video_params *params, video_input **out,
 
 /* Reads the next frame into *frame (planes point into the reader's buffer,
  * valid until the next read). Returns 1 for a frame, 0 at a clean end, -1 on
- * an error with a message in err (a truncated frame is an error). */
+ * an error with a message in err (a truncated frame is an error); after an
+ * error every read fails with it (after the kept frames, when replaying). */
 int video_read(video_input *in, ct_frame *frame, char *err, size_t err_len);
 
 /* Keeps a copy of the next `frames` frames read (from the first), for
@@ -54,6 +55,9 @@ int video_keep(video_input *in, long long frames, char *err, size_t err_len);
 /* From the next read on, the kept frames are read again, then the input
  * goes on where it was. Returns how many frames were kept. */
 long long video_replay(video_input *in);
+
+/* Kept frame i (from 0) into *frame, its planes in the reader's memory;
+ * returns 1, or 0 when there is no such frame. */
 int video_kept(video_input *in, long long i, ct_frame *frame);
 
 void video_close(video_input *in);
