@@ -580,7 +580,9 @@ NOTES = """## Notes
   its predicted box before association and follows it through missing detections
   (docs/notes/meanshift.md). "pixels": no detections at all; ctrack finds people with
   its background model and contour template (docs/notes/pixels.md), like the MOG2
-  baseline.
+  baseline. ct-track first learns the background from the video's first 3 seconds
+  (`ct_tracker_prime()`, its default for a recording); "fed live" is the same run with
+  `--prime 0`, as a camera's stream is tracked.
 - **Ablations.** "mean shift off" is the same run with `mean_shift=0` and every
   other parameter equal, the lost-track lifetime and the reporting of lost tracks
   included: what mean shift adds comes from following the pixels, not from

@@ -280,7 +280,6 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
 {
     if (!tracker)
         return CT_ERROR_INVALID_ARGUMENT;
-    ctrack::Stopwatch sw;
     clear_error(tracker);
     char *msg = tracker->error;
     const size_t len = sizeof tracker->error;
@@ -288,6 +287,13 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
         return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
                             "frames: %s; priming takes at least one frame",
                             frames ? "n is 0" : "NULL");
+    if (n > ctrack::kPrimeMaxFrames)
+        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                            "n: %zu frames; priming takes at most %zu (a recording's first "
+                            "seconds)",
+                            n, ctrack::kPrimeMaxFrames);
+    // The frames' checks count as the first step's validation.
+    ctrack::Stopwatch sw;
     ctrack::MemoryScope scope(&tracker->memory);
     return guarded(tracker, [&]() -> int {
         // Every frame is checked before the tracker changes.

@@ -476,8 +476,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     // is no earlier frame to wait for. Not the pixels' candidates: a
     // background model learns its first frame and finds none there, and
     // one primed on the recording (ct_tracker_prime()) finds fragments and
-    // groups as in any frame (TUD-Campus primed, 43.7 / 54.5 confirmed at
-    // once, 51.0 / 69.3 not).
+    // groups as in any frame (TUD-Campus with its median learnt first:
+    // 43.7 / 54.5 confirmed at once, 51.0 / 69.3 not).
     const bool confirm_now = first && cfg_.source == CT_SOURCE_DETECTIONS;
     const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : cfg_.start_score;
     for (int j : pool_dets_) {

@@ -19,6 +19,10 @@ namespace ctrack {
 // recording's start").
 CT_TUNABLE(kPrimeClean, "CTRACK_PRIME_CLEAN", 5.0);
 
+// The most frames ct_tracker_prime() takes (18 minutes at 60 frames/s):
+// more is a count gone wrong.
+constexpr size_t kPrimeMaxFrames = 1 << 16;
+
 // At most this many of the frames (evenly spaced) give the median.
 constexpr size_t kPrimeMedianFrames = 31;
 

@@ -1003,6 +1003,8 @@ START_TEST(prime_refuses_bad_frames)
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "NULL"));
     ck_assert_int_eq(ct_tracker_prime(t, pf, 0), CT_ERROR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "n is 0"));
+    ck_assert_int_eq(ct_tracker_prime(t, pf, (size_t)-1), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ct_tracker_last_error(t), "at most"));
     struct {
         int index;
         const char *message;

@@ -389,19 +389,21 @@ CT_API int ct_tracker_reset(ct_tracker *tracker);
 /* Learns the scene's background from n frames of a recording before
  * tracking it (added in 0.9.0): *frames[0..n-1], its first seconds, in
  * order, with increasing timestamps, all with pixels, of one size and
- * format (each a ct_frame of its own, sized by its own size field). Each pixel's median
- * over them (over 31 of them, evenly spaced, when there are more) is the
- * background behind the people who walk through; the frames, with what
- * differs from it by more than their noise put back to it, then teach the
- * background model its levels and the scene's noise. Then the tracker
+ * format (each a ct_frame of its own, sized by its own size field). Each
+ * pixel's median over them (over 31 of them, evenly spaced, when there are
+ * more) is the background behind the people who walk through; the frames,
+ * with what differs from it by more than five times their noise put back
+ * to it, then teach the background model its levels and the scene's
+ * noise. Then the tracker
  * forgets the tracks and the last timestamp, as ct_tracker_reset() does,
  * but keeps the background: feed the recording from its first frame, with
  * any timestamps. The people already there when it starts are found from
  * its first frame (CT_SOURCE_PIXELS, or verify_detections), where a live
  * feed has seen no background behind them yet. The frames are read during
- * the call only. Their steps count in ct_stats. When the frames are at fault
- * nothing changes; when memory runs out, the tracker is left as after
- * ct_tracker_reset(). (docs/API.md, "A recording's start".) */
+ * the call only (at most 65536 of them). Their steps count in ct_stats.
+ * When the frames are at fault nothing changes; when memory runs out, the
+ * tracker is left as after ct_tracker_reset(). (docs/API.md, "A recording's
+ * start".) */
 CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t n);
 
 /* The seconds of a recording's start that ct-track and the Python batch
