@@ -21,7 +21,7 @@ CT_TUNABLE(kPrimeClean, "CTRACK_PRIME_CLEAN", 5.0);
 
 // The most frames ct_tracker_prime() takes (18 minutes at 60 frames/s):
 // more is a count gone wrong.
-constexpr size_t kPrimeMaxFrames = 1 << 16;
+constexpr size_t kPrimeMaxFrames = CT_PRIME_MAX_FRAMES;
 
 // At most this many of the frames (evenly spaced) give the median.
 constexpr size_t kPrimeMedianFrames = 31;
@@ -34,8 +34,6 @@ public:
     // describes it in frame(), with like's timestamp.
     void shape(const ct_frame &like);
     const ct_frame &frame() const { return frame_; }
-    uint8_t *data() { return bytes_.data(); }
-    size_t memory_bytes() const { return bytes_.capacity(); }
 
 private:
     Vec<uint8_t> bytes_;

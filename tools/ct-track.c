@@ -286,6 +286,8 @@ static int prime(run *r)
     long long n = (long long)ceil(o->prime * r->rate_num / r->rate_den);
     if (r->frames > 0 && n > r->frames)
         n = r->frames;
+    if (n > CT_PRIME_MAX_FRAMES)
+        n = CT_PRIME_MAX_FRAMES;
     const size_t bytes = frame_bytes(r->format, r->width, r->height);
     char msg[512];
     if (bytes > 0 && (size_t)n > PRIME_MAX_BYTES / bytes) {
@@ -295,17 +297,16 @@ static int prime(run *r)
         fprintf(stderr, "ct-track: --prime: %lld frames fit in %zu MiB, %.2f s\n", n,
                 PRIME_MAX_BYTES >> 20, (double)n * r->rate_den / r->rate_num);
     }
-    if (video_keep(r->in, n, msg, sizeof msg) < 0) {
-        fprintf(stderr, "ct-track: --prime: %s\n", msg);
-        return -1;
-    }
+    /* Priming is worth a try, not a failed run: without the memory for it,
+     * the video is tracked live. */
     ct_frame *frames = malloc((size_t)n * sizeof *frames);
     const ct_frame **ptrs = malloc((size_t)n * sizeof *ptrs);
-    if (!frames || !ptrs) {
+    if (!frames || !ptrs || video_keep(r->in, n, msg, sizeof msg) < 0) {
+        fprintf(stderr, "ct-track: --prime: %s: tracked live\n",
+                frames && ptrs ? msg : "out of memory");
         free(frames);
         free(ptrs);
-        fprintf(stderr, "ct-track: out of memory\n");
-        return -1;
+        return 0;
     }
     /* A read that fails stops the start here: the frames before it are
      * primed on and tracked, and the tracking meets the error where a run

@@ -400,7 +400,7 @@ CT_API int ct_tracker_reset(ct_tracker *tracker);
  * any timestamps. The people already there when it starts are found from
  * its first frame (CT_SOURCE_PIXELS, or verify_detections), where a live
  * feed has seen no background behind them yet. The frames are read during
- * the call only (at most 65536 of them). Their steps count in ct_stats.
+ * the call only (at most CT_PRIME_MAX_FRAMES). Their steps count in ct_stats.
  * When the frames are at fault nothing changes; when memory runs out, the
  * tracker is left as after ct_tracker_reset(). (docs/API.md, "A recording's
  * start".) */
@@ -409,6 +409,8 @@ CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, 
 /* The seconds of a recording's start that ct-track and the Python batch
  * runner prime on by default (docs/tuning.md, "A recording's start"). */
 #define CT_PRIME_SECONDS 3.0
+/* The most frames ct_tracker_prime() takes. */
+#define CT_PRIME_MAX_FRAMES 65536
 
 /* ------------------------------------------------------------------------ */
 /* Candidates found in the pixels (source CT_SOURCE_PIXELS), or the external
