@@ -18,8 +18,6 @@ build/lib/), or with ctrack installed. For many videos at once, see
 `python -m ctrack.batch`.
 """
 import argparse
-import itertools
-import math
 import os
 import sys
 
@@ -28,7 +26,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import ctrack  # noqa: E402
-from ctrack.video import Video, frame_time  # noqa: E402
+from ctrack.video import Video, frame_time, primed  # noqa: E402
 
 
 def main():
@@ -50,14 +48,10 @@ def main():
     out = open(a.output, "w") if a.output else sys.stdout
     with video, ctrack.Tracker(fps=rate[0] / rate[1], source=source) as tracker:
         try:
-            frames = iter(video)
-            if source == ctrack.SOURCE_PIXELS:
-                n = math.ceil(ctrack.PRIME_SECONDS * rate[0] / rate[1])
-                start = list(itertools.islice(frames, n))
-                if start:
-                    tracker.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
-                                  format="i420")
-                frames = itertools.chain(start, frames)
+            # From the pixels: the background learnt from the first seconds
+            # (Tracker.prime()), which are then fed again.
+            frames = primed(tracker, video, rate,
+                            ctrack.PRIME_SECONDS if source == ctrack.SOURCE_PIXELS else 0)
             for k, frame in enumerate(frames, start=1):
                 d = dets[dets[:, 0] == k][:, 2:7] if dets is not None else None
                 tracks = tracker.feed(frame, d, timestamp=frame_time(k, rate), format="i420")

@@ -292,7 +292,6 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
                             "n: %zu frames; priming takes at most %zu (a recording's first "
                             "seconds)",
                             n, ctrack::kPrimeMaxFrames);
-    // The frames' checks count as the first step's validation.
     ctrack::Stopwatch sw;
     ctrack::MemoryScope scope(&tracker->memory);
     return guarded(tracker, [&]() -> int {
@@ -332,9 +331,12 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
             e.rewind();
             ctrack::PackedFrame median, clean;
             ctrack::median_frame(loaded.data(), n, &median);
+            // The steps count in ct_stats; the checks, the median and the
+            // cleaning are no step's validation, and are not counted.
             for (size_t i = 0; i < n; i++) {
                 ctrack::clean_frame(loaded[i], median, ctrack::kPrimeClean, &clean);
-                step_frame(tracker, clean.frame(), nullptr, 0, sw.lap(), sw);
+                sw.lap();
+                step_frame(tracker, clean.frame(), nullptr, 0, 0, sw);
             }
             e.rewind();
             e.set_next_id(next_id);

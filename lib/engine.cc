@@ -32,21 +32,6 @@ Engine::Engine(const ct_config &cfg) : cfg_(cfg)
     size_gate_.set_gate(cfg.size_gate);
 }
 
-void Engine::reset()
-{
-    pixels_.reset();
-    scene_.reset();
-    size_.reset(0);
-    size_gate_.reset();
-    scores_.reset();
-    tracks_.clear();
-    reported_.clear();
-    has_time_ = false;
-    last_us_ = 0;
-    scene_shift_us_ = scene_last_us_ = scene_interval_us_ = 0;
-    rewound_ = false;
-}
-
 void Engine::rewind()
 {
     tracks_.clear();
@@ -55,6 +40,18 @@ void Engine::rewind()
     rewound_ = rewound_ || has_time_;
     has_time_ = false;
     last_us_ = 0;
+}
+
+void Engine::reset()
+{
+    rewind();
+    pixels_.reset();
+    scene_.reset();
+    size_.reset(0);
+    size_gate_.reset();
+    scores_.reset();
+    scene_shift_us_ = scene_last_us_ = scene_interval_us_ = 0;
+    rewound_ = false;
 }
 
 void Engine::refine(const Planes &img)

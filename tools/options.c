@@ -152,6 +152,14 @@ static int set_param(ct_config *cfg, const char *arg)
     return -1;
 }
 
+/* A number in [lo, hi] that fills the whole of s into *v; -1 when not. */
+static int parse_number(const char *s, double lo, double hi, double *v)
+{
+    char *end;
+    *v = strtod(s, &end);
+    return end == s || *end || !(*v >= lo && *v <= hi) ? -1 : 0;
+}
+
 static int parse_size(const char *s, int *w, int *h)
 {
     char *end;
@@ -254,27 +262,21 @@ int options_parse(int argc, char **argv, options *o)
                 return EXIT_USAGE;
             }
             break;
-        case 'r': {
-            char *end;
-            o->fps = strtod(optarg, &end);
-            if (end == optarg || *end || !(o->fps >= VIDEO_MIN_RATE && o->fps <= VIDEO_MAX_RATE)) {
+        case 'r':
+            if (parse_number(optarg, VIDEO_MIN_RATE, VIDEO_MAX_RATE, &o->fps) < 0) {
                 fprintf(stderr, "ct-track: --fps: '%s' is not a rate in [%g, %g]\n", optarg,
                         VIDEO_MIN_RATE, VIDEO_MAX_RATE);
                 return EXIT_USAGE;
             }
             break;
-        }
         case OPT_NO_PIXELS: o->no_pixels = 1; break;
-        case OPT_PRIME: {
-            char *end;
-            o->prime = strtod(optarg, &end);
-            if (end == optarg || *end || !(o->prime >= 0 && o->prime <= 3600)) {
+        case OPT_PRIME:
+            if (parse_number(optarg, 0, 3600, &o->prime) < 0) {
                 fprintf(stderr, "ct-track: --prime: '%s' is not a duration in [0, 3600] "
                                 "seconds\n", optarg);
                 return EXIT_USAGE;
             }
             break;
-        }
         case 'o': o->out_path = optarg; break;
         case OPT_OVERLAY: o->overlay_path = optarg; break;
         case OPT_OVERLAY_CANDIDATES: o->overlay_candidates = 1; break;

@@ -46,7 +46,6 @@ dependency (pip install ray).
 import argparse
 import configparser
 import csv
-import itertools
 import math
 import os
 import sys
@@ -226,7 +225,7 @@ def track_one(job, outdir, params=None, library=None, force=False):
     returns its summary row. Never raises for a bad input: its error goes
     in the row."""
     import ctrack
-    from ctrack.video import Video, frame_time
+    from ctrack.video import Video, frame_time, primed
 
     out = os.path.join(outdir, job["name"] + ".txt")
     row = {"input": job["input"], "output": out, "status": "failed", "frames": 0,
@@ -262,17 +261,10 @@ def track_one(job, outdir, params=None, library=None, force=False):
             params.setdefault("source", ctrack.SOURCE_PIXELS)
         with ctrack.Tracker(fps=rate[0] / rate[1], library=library, image_size=image_size,
                             **params) as t, open(tmp, "w") as f:
-            prime = job.get("prime", ctrack.PRIME_SECONDS)
-            if (job["video"] and prime > 0 and
-                    (t.config["source"] == ctrack.SOURCE_PIXELS or
-                     t.config["verify_detections"])):
-                # As ct-track --prime: the first ceil(prime * rate) frames.
-                n = math.ceil(prime * rate[0] / rate[1])
-                start = list(itertools.islice(frame_iter, n))
-                if start:
-                    t.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
-                            format="i420")
-                frame_iter = itertools.chain(start, frame_iter)
+            if job["video"] and (t.config["source"] == ctrack.SOURCE_PIXELS or
+                                 t.config["verify_detections"]):
+                frame_iter = primed(t, frame_iter, rate,
+                                    job.get("prime", ctrack.PRIME_SECONDS))
             for k, frame in enumerate(frame_iter, 1):
                 tracks = t.feed(frame, dets.get(k), timestamp=frame_time(k, rate),
                                 format="i420" if frame is not None else None)

@@ -9,6 +9,7 @@
 ffmpeg (which must be on the PATH) decodes the video to a Y4M stream on a
 pipe, so its size and rate are the ones ct-track reads from that stream.
 """
+import itertools
 import math
 import subprocess
 import tempfile
@@ -22,6 +23,22 @@ def frame_time(k, rate):
     num)."""
     num, den = rate
     return math.floor((k - 1) * 1e6 * den / num + 0.5) / 1e6
+
+
+def primed(tracker, frames, rate, seconds):
+    """As ct-track --prime: primes tracker (Tracker.prime()) on the first
+    ceil(seconds * rate) of frames (I420 arrays at rate (numerator,
+    denominator), timestamps on ct-track's grid) and returns an iterator over
+    all the frames again, from the first, to feed. seconds <= 0: frames as
+    they are."""
+    if seconds <= 0:
+        return iter(frames)
+    frames = iter(frames)
+    start = list(itertools.islice(frames, math.ceil(seconds * rate[0] / rate[1])))
+    if start:
+        tracker.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
+                      format="i420")
+    return itertools.chain(start, frames)
 
 
 class Video:
