@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "alloc_count.h"
-#include "appearance.h"
+#include "appearance/appearance.h"
 #include "video.h"
 
 using namespace ctrack;

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "video.h"
-#include "engine.h"
+#include "track/engine.h"
 
 int main(int argc, char **argv)
 {

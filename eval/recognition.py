@@ -29,7 +29,7 @@ the contour template's regions.
    by blob, for comparison: the one that best separates positives from
    negatives by that region's own vote (balanced accuracy); then the
    largest part of its convex hull a pedestrian's blob may fill. The
-   shipped thresholds (lib/classifier_params.inc) are chosen by tracking
+   shipped thresholds (lib/template/classifier_params.inc) are chosen by tracking
    instead (eval/vote.py): chosen blob by blob, they rejected more small
    people than they spared (docs/notes/pixels.md).
 
@@ -332,7 +332,7 @@ def picture_of_shape_rejections(build, sets, rejected, column, path, n=24):
 
 def shipped_params():
     """The classifier's parameters the library is built with
-    (lib/classifier_params.inc): the regions' thresholds, the largest fill
+    (lib/template/classifier_params.inc): the regions' thresholds, the largest fill
     of the convex hull and the widest top against the body (all chosen by
     tracking, eval/vote.py)."""
     values = classifier_params()

@@ -27,7 +27,7 @@ holds shapes to it).
 then --score the other with the choice). --score only scores --start, and
 the shipped values, over the families and over conditions no threshold is
 chosen on (cteval.families.HELD_OUT_FAMILY). --write rewrites
-lib/classifier_params.inc with the choice. A choice is adopted only when it
+lib/template/classifier_params.inc with the choice. A choice is adopted only when it
 loses nothing over the held-out conditions either: on TUD-Campus's 71
 frames the objective's noise is as large as what a step gains, and two
 rounds can climb on it (docs/tuning.md).
@@ -55,7 +55,7 @@ FLOORS = {("conditions", "PETS09-S2L1", "as it is"): PIXEL_FLOORS["PETS09-S2L1"]
 
 
 def shipped():
-    """The thresholds lib/classifier_params.inc holds, by name."""
+    """The thresholds lib/template/classifier_params.inc holds, by name."""
     return dict(zip(NAMES, classifier_params()))
 
 
@@ -161,7 +161,7 @@ def main():
     ap.add_argument("--start", help="JSON: the thresholds to start from (others shipped)")
     ap.add_argument("--sequences", help="choose on these only (comma-separated)")
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--write", action="store_true", help="rewrite lib/classifier_params.inc")
+    ap.add_argument("--write", action="store_true", help="rewrite lib/template/classifier_params.inc")
     ap.add_argument("--score", action="store_true", help="only score --start beside the shipped")
     a = ap.parse_args()
     start = shipped()

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "appearance.h"
+#include "appearance/appearance.h"
 #include "common.h"
 #include "describe_reference.h"
 #include "test_image.h"

@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "assign.h"
+#include "track/assign.h"
 
 using ctrack::Vec;
 

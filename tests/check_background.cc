@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "background.h"
-#include "blobs.h"
-#include "classifier.h"
-#include "prime.h"
+#include "pixels/background.h"
+#include "pixels/blobs.h"
+#include "template/classifier.h"
+#include "pixels/prime.h"
 
 using namespace ctrack;
 

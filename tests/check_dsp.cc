@@ -10,9 +10,9 @@
 #include <cstring>
 #include <vector>
 
-#include "convert.h"
-#include "cpu.h"
-#include "dsp.h"
+#include "api/convert.h"
+#include "dsp/cpu.h"
+#include "dsp/dsp.h"
 
 using namespace ctrack;
 

@@ -18,7 +18,7 @@
 
 #include "common.h"
 #include "test_image.h"
-#include "meanshift.h"
+#include "meanshift/meanshift.h"
 
 using namespace ctrack;
 

@@ -20,9 +20,9 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
-#include "background.h"
-#include "blobs.h"
-#include "nnindex.h"
+#include "pixels/background.h"
+#include "pixels/blobs.h"
+#include "appearance/nnindex.h"
 #include "video.h"
 
 static const char *data_dir;
@@ -457,7 +457,7 @@ END_TEST
 // FLANN's kd-tree (sets of more than NNIndex::kBruteForceMax points) with
 // each allocation of its build failing in turn: std::bad_alloc and an
 // empty index, never a node at address 0 (FLANN's pool takes its blocks
-// from malloc unchecked; lib/nnindex.cc routes them through a check).
+// from malloc unchecked; lib/appearance/nnindex.cc routes them through a check).
 START_TEST(kd_tree_build_out_of_memory)
 {
     const int n = 300, dim = 11;

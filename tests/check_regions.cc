@@ -1,4 +1,4 @@
-// lib/regions.h against OpenCV: the closing against morphologyEx, the outer
+// lib/pixels/regions.h against OpenCV: the closing against morphologyEx, the outer
 // regions' boxes against findContours(RETR_EXTERNAL) and boundingRect(), to
 // the bit and in order, on random masks made of people-like bars, specks,
 // rings with regions in their holes and foreground on the image's edges,
@@ -16,8 +16,8 @@
 #include <random>
 #include <vector>
 
-#include "regions.h"
-#include "shape.h"
+#include "pixels/regions.h"
+#include "template/shape.h"
 #include "shape_reference.h"
 
 using namespace ctrack;

@@ -1,6 +1,6 @@
 // The appearance descriptor as first written, block by block, each mean
 // from its own loop over its pixels: the reference that Describer
-// (lib/appearance.cc), which sums each band of rows once, must equal to the
+// (lib/appearance/appearance.cc), which sums each band of rows once, must equal to the
 // bit (check_appearance). Deliberately a copy of the old code.
 #ifndef CT_TESTS_DESCRIBE_REFERENCE_H
 #define CT_TESTS_DESCRIBE_REFERENCE_H
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "appearance.h"
+#include "appearance/appearance.h"
 
 namespace describe_reference {
 

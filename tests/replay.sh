@@ -70,7 +70,7 @@ printf 'PETS09-S2L1, detections with low-score jitter boxes: '
 
 # A detector that is never as sure as confirm_score: PETS09-S2L1's scores
 # times 0.9 (none above 0.9). The tracker learns the detector's scale and
-# its best boxes confirm tracks (lib/score_scale.h); with confirm_score
+# its best boxes confirm tracks (lib/track/score_scale.h); with confirm_score
 # alone, no track after the first frame's would be confirmed.
 "$py" - "$data/PETS09-S2L1/det/det.txt" "$tmp/unsure.txt" <<'PY'
 import sys

@@ -1,4 +1,4 @@
-// The contour template's shape (lib/shape.cc) as first written, for
+// The contour template's shape (lib/template/shape.cc) as first written, for
 // tests/check_regions.cc to hold the faster one to it, to the bit: the
 // per-pixel flood fill of the background the box's border reaches, the
 // outline pixel by pixel, the chamfer distance cell by cell (the convex
@@ -11,13 +11,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "mask.h"
-#include "shape.h"
+#include "pixels/mask.h"
+#include "template/shape.h"
 
 
 namespace reference {
 using namespace ctrack;
-// lib/shape.cc as it was before its runs and chamfer passes (0.9.0):
+// lib/template/shape.cc as it was before its runs and chamfer passes (0.9.0):
 // the per-pixel flood fill and the cell-by-cell chamfer distance.
 struct RefShape {
     Profile profile;

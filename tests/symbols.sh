@@ -23,7 +23,7 @@ while read -r s; do
 done < "$tmp/exported"
 # No ifunc resolvers (GCC's target_clones): they run while the library
 # loads, before a sanitizer's runtime starts (ThreadSanitizer could not load
-# the library). CPU features are dispatched at run time (lib/dsp.h).
+# the library). CPU features are dispatched at run time (lib/dsp/dsp.h).
 if readelf -sW "$lib" | grep -w IFUNC; then
     echo "symbols: ifunc symbols in the library (above)"
     status=1

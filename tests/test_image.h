@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "video.h"
-#include "planes.h"
+#include "base/planes.h"
 
 struct Image {
     int w = 0, h = 0;

@@ -13,7 +13,7 @@ from .y4m import open_y4m
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DATA = os.path.join(TOP, "tests", "data", "mot15")
 SCRIPTS = os.path.join(TOP, "scripts")
-CLASSIFIER_PARAMS = os.path.join(TOP, "lib", "classifier_params.inc")
+CLASSIFIER_PARAMS = os.path.join(TOP, "lib", "template", "classifier_params.inc")
 # (MOTA, IDF1) floors of the single runs from the pixels alone, as
 # tests/replay.sh checks them (and reads them from here): ct-track's
 # defaults, which prime on the video's first 3 seconds (ct_tracker_prime()).
@@ -24,7 +24,7 @@ PIXEL_FLOORS = {"PETS09-S2L1": (71.0, 75.5), "PETS09-S2L1 at half size": (69.5, 
 
 
 def classifier_params():
-    """The contour template's eleven values in lib/classifier_params.inc, in
+    """The contour template's eleven values in lib/template/classifier_params.inc, in
     order: the nine regions' thresholds (head, neck, shoulders, chest, back,
     abdomen, buttocks, upper limbs, lower limbs), the largest part of its
     convex hull a pedestrian's blob fills, the widest top against the body."""

@@ -9,8 +9,8 @@ import numpy as np
 
 from conftest import TOP
 
-MAKE_SILHOUETTES = os.path.join(TOP, "lib", "make-silhouettes.py")
-SILHOUETTES = os.path.join(TOP, "lib", "silhouettes.inc")
+MAKE_SILHOUETTES = os.path.join(TOP, "scripts", "make-silhouettes.py")
+SILHOUETTES = os.path.join(TOP, "lib", "template", "silhouettes.inc")
 
 
 def check_silhouettes(path):

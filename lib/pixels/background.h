@@ -1,0 +1,141 @@
+// The background model for tracking from the pixels alone: Sigma-Delta
+// estimation (Manzanera and Richefeu 2004) in integers on the frame at a
+// working scale (half resolution, or full or a quarter for small or large
+// people), with selective update and chroma shadow suppression.
+#ifndef CTRACK_BACKGROUND_H
+#define CTRACK_BACKGROUND_H
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "base/memory.h"
+
+#include "dsp/dsp.h"
+#include "pixels/mask.h"
+#include "pixels/noise.h"
+#include "base/planes.h"
+
+namespace ctrack {
+
+// n / d for d in [1, 255] and n < 2^16, by a multiplication.
+uint32_t divide_small(uint32_t n, uint32_t d);
+
+class Background {
+public:
+    Background() : dsp_(make_dsp()) { set_gain(1.0); }
+    // The working scale: one working pixel for scale x scale frame pixels,
+    // 1, 2 or 4. The model starts at kStartScale (the chroma grid of 4:2:0);
+    // the host of the model chooses another from the people's size.
+    static constexpr int kStartScale = 2;
+    static constexpr int kMinScale = 1, kMaxScale = 4;
+    int scale() const { return scale_; }
+    // The finest scale the model may take: kMinScale, or the scale it had
+    // when a step that took it finer was rolled back (out of memory: a
+    // fixed heap keeps the scale it holds rather than fail every frame).
+    int finest_scale() const { return finest_; }
+
+    // Updates the model with the frame and computes the foreground mask
+    // (255 foreground, 0 background, working size). Pixels inside `frozen`
+    // (working coordinates at `scale`: the boxes of confirmed tracks) are
+    // not learnt, so a person who stops stays foreground. A frame of another
+    // size restarts the model, at `scale`. Another scale than the model's
+    // resamples it: each new working pixel takes M and V of the old pixel
+    // around it (of up to four) whose M is closest to the frame there, and
+    // the chroma of the one closest in chroma, so that the background's
+    // edges stay sharp and a person on them stays foreground; `scale` is
+    // taken no finer than finest_scale().
+    void apply(int64_t t_us, const Planes &img, int scale, const Rect *frozen, int n_frozen);
+    // The model starts again with the next frame, at kStartScale.
+    void reset()
+    {
+        frames_ = 0;
+        scale_ = std::max(kStartScale, finest_);
+    }
+    // Whether a frame was learnt since the start or the last reset.
+    bool started() const { return frames_ > 0; }
+    // The model as it was before the last apply() (and absorb()) is kept
+    // until commit(): rollback() returns to it, so that a step that fails
+    // after the update leaves the model untouched. Both are O(1) and never
+    // throw.
+    void commit() { kept_ = false; }
+    void rollback();
+
+    const uint8_t *mask() const { return mask_.data(); }
+
+    // Edge strength along the outline of the blob `blob` (a working-size
+    // mask, non-zero inside) within r: in the frame (`frame`) and in the
+    // model (`model`), sums of |dx| + |dy| of luma over the blob's outline
+    // pixels. A ghost (the model still holds what has left) has its edges
+    // in the model, a real object in the frame.
+    void outline_edges(const Planes &img, const uint8_t *blob, const Rect &r, long *frame,
+                       long *model) const;
+    // Re-learns the pixels of the blob within r at once: the model takes the
+    // frame's values there.
+    void absorb(const Planes &img, const uint8_t *blob, const Rect &r);
+    int width() const { return w_; }
+    int height() const { return h_; }
+    size_t memory_bytes() const;
+
+private:
+    void start(const Planes &img);
+    // Sizes the buffers for the image at scale_.
+    void size_for(const Planes &img);
+    // The model before this frame at scale_, from the old buffers at the old
+    // dimensions (old_dims_), into rs_*.
+    void resample(const Planes &img);
+    void release_resampled();
+    // The frame's exposure against the model's: the median ratio of image to
+    // model luma over a grid of pixels no track stands on (1 within a
+    // deadband). A global step of light (auto-exposure, a cloud, a lamp)
+    // changes it, people moving do not.
+    double exposure_ratio(const Planes &img, const Rect *frozen, int n_frozen);
+    // Row y of the frozen mask (1 inside the boxes, working pixels): a row
+    // no box reaches is a row of zeros kept for it, else one row of
+    // frozen_line_ is filled.
+    const uint8_t *frozen_row(const Rect *frozen, int n_frozen, int y);
+    // Reads the frame's luma divided by gain from now on (gain_lut_).
+    void set_gain(double gain);
+    void swap_models();
+
+    static Dsp make_dsp();
+    Dsp dsp_; // the row kernels for this CPU, chosen when the tracker is made
+    int w_ = 0, h_ = 0, fw_ = 0, fh_ = 0, scale_ = kStartScale, finest_ = kMinScale;
+    bool color_ = false;
+    int frames_ = 0;
+    NoiseLevel noise_;
+    NoiseSamples noise_samples_;
+    // The exposure, and the table through which the frame's luma is read:
+    // the model stays in its own exposure while the frames' changes, and a
+    // global step of light is no foreground.
+    double gain_ = 1.0;
+    uint8_t gain_lut_[256];
+    int64_t start_us_ = 0, last_us_ = 0;
+    // Means and variances (Sigma-Delta: M moves one level a frame toward
+    // the image, V toward N times |I - M|).
+    Vec<uint8_t> my_, vy_, mu_, mv_;
+    // The model before the last apply(), while kept_: apply() reads it and
+    // writes the new one into the buffers above (double buffering: no copy).
+    struct Dims {
+        int w, h, fw, fh, scale;
+        bool color;
+        int frames;
+        int64_t start_us, last_us;
+        NoiseLevel noise;
+        double gain;
+    } old_dims_{};
+    Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    // The old model resampled to a new scale, for the one update that
+    // changes it (released after).
+    Vec<uint8_t> rs_my_, rs_vy_, rs_mu_, rs_mv_;
+    bool kept_ = false;
+    Vec<uint8_t> mask_;
+    Vec<uint8_t> frozen_line_; // a row of zeros, then a row for frozen_row()
+    Vec<uint8_t> line_y_, line_u_, line_v_; // one row's samples
+    Vec<uint8_t> line_vmax_;                // kVMax, a row of it
+    Vec<uint8_t> line_dy_, line_dc_;        // a noise row's differences (BgRow)
+};
+
+} // namespace ctrack
+
+#endif

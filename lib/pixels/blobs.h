@@ -1,0 +1,73 @@
+// From the foreground mask to person-sized candidates: a closing, the outer
+// regions (regions.h), fragments merged, groups split, with the
+// classifier's consent where a merge or a split is in doubt.
+#ifndef CTRACK_BLOBS_H
+#define CTRACK_BLOBS_H
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "base/memory.h"
+
+#include "template/classifier.h"
+#include "pixels/mask.h"
+#include "track/person_size.h"
+
+namespace ctrack {
+
+class BlobFinder {
+public:
+    BlobFinder();
+    ~BlobFinder();
+    BlobFinder(const BlobFinder &) = delete;
+    BlobFinder &operator=(const BlobFinder &) = delete;
+
+    // Cleans the w x h mask (a closing) and returns the boxes of
+    // its blobs: those at least min_area pixels, fragments of one person
+    // (stacked one above the other) merged, and blobs wider than a person
+    // split, at the predicted boxes' centres when tracks are there, else
+    // into equal parts at the valleys of the column profile. What counts as
+    // a speck, a person's height and a person's width come from `size`
+    // (frame pixels; a working pixel of the mask is `scale` frame pixels
+    // across); `cls` votes where a merge or a split is in doubt.
+    void find(const uint8_t *mask, int w, int h, int scale, const Rect *predicted,
+              int n_predicted, const PersonSize &size, Classifier &cls, Vec<Rect> &out);
+    // The last find()'s cuts: blobs past the cap (the smallest), and whether
+    // the mask was so full of foreground that it gave none.
+    int dropped() const { return dropped_; }
+    // Whether the last find()'s blob i is a whole blob, not a part of one
+    // that was split (a group, or a blob two tracks shared).
+    bool whole(size_t i) const { return whole_[i] != 0; }
+    bool flooded() const { return flooded_; }
+    // Only the cleaning: the closing of the w x h mask.
+    void clean(const uint8_t *mask, int w, int h);
+    // The cleaned mask of the last find() or clean(), and its size.
+    const uint8_t *cleaned() const;
+    int width() const;
+    int height() const;
+    size_t memory_bytes() const;
+
+private:
+    // The classifier's score of the cleaned mask inside r.
+    float vote(Classifier &cls, const Rect &r) const;
+    // The part of r between columns x0 and x1, with its own rows.
+    Rect rows_of(const Rect &r, int x0, int x1) const;
+    // Where to cut r between two people side by side, from two heads on its
+    // top edge, when the contour template takes both parts for pedestrians
+    // and scores them above the whole: the column, or -1.
+    int between_heads(const Rect &r, Classifier &cls);
+    struct Impl;
+    Owned<Impl> impl_;
+    Vec<char> whole_;
+    int dropped_ = 0;
+    bool flooded_ = false;
+};
+
+// Person shape in working pixels: height over width of an upright person is
+// at least this...
+constexpr double kPersonAspect = 2.0;
+
+} // namespace ctrack
+
+#endif

@@ -1,0 +1,221 @@
+#include "pixels/candidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/clock.h"
+#include "base/tunable.h"
+
+namespace ctrack {
+
+namespace {
+
+// Model edges over frame edges above which a blob is a ghost: what has left
+// but is still in the model (people of the first frames, a car that drove
+// off) has its edges in the model, a real object in the frame. The choice
+// is measured in docs/notes/pixels.md.
+constexpr double kGhostEdges = 2.0;
+// The narrowest blob at the image's left or right edge that is voted on, in
+// working pixels (docs/tuning.md, "A sliver at the edge").
+constexpr int kEdgeMinWidth = 3;
+
+// The working scale from the people's size (docs/notes/pixels.md, "The
+// working scale"): the coarsest of 1, 2 and 4 at which a typical person
+// keeps kPersonRows working rows. Going coarser needs kScaleMargin times
+// that, going finer less than it over kScaleMargin, so that a size near a
+// bound does not swing the model between two scales. Finer is taken as
+// soon as the size is known (people are being missed); coarser, which
+// only saves time, once kCoarserSamples boxes are behind the size (each
+// change perturbs the tracks for a moment).
+CT_TUNABLE(kPersonRows, "CTRACK_PERSON_ROWS", 33);
+CT_TUNABLE(kScaleMargin, "CTRACK_SCALE_MARGIN", 1.2);
+CT_TUNABLE(kCoarserSamples, "CTRACK_COARSER_SAMPLES", 200);
+
+int working_scale(const PersonSize &size, int current, int finest)
+{
+    if (!size.known())
+        return std::max(Background::kStartScale, finest);
+    const double h = size.typical_height();
+    int s = current;
+    if ((double)size.samples() >= kCoarserSamples)
+        while (s < Background::kMaxScale && h / (2 * s) >= kPersonRows * kScaleMargin)
+            s *= 2;
+    while (s > finest && h / s < kPersonRows / kScaleMargin)
+        s /= 2;
+    return s;
+}
+
+Rect to_working(const Box &b, int s)
+{
+    return Rect{pixel_int(std::floor(b.left / s)), pixel_int(std::floor(b.top / s)),
+                pixel_int(std::ceil((b.left + b.width) / s)),
+                pixel_int(std::ceil((b.top + b.height) / s))};
+}
+
+} // namespace
+
+void PixelCandidates::clear()
+{
+    have_mask_ = false;
+    candidates_.clear();
+}
+
+void PixelCandidates::reset()
+{
+    background_.reset();
+    candidates_.clear();
+}
+
+size_t PixelCandidates::memory_bytes() const
+{
+    return background_.memory_bytes() + blobs_.memory_bytes() + classifier_.memory_bytes() +
+           (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
+           dets_.capacity() * sizeof(ct_detection) + candidates_.capacity() * sizeof(ct_candidate);
+}
+
+void PixelCandidates::update_background(int64_t t_us, const Planes &img,
+                                        const Vec<Track> &tracks, const PersonSize &size,
+                                        int finest)
+{
+    const int s =
+        working_scale(size, background_.scale(), std::max(finest, background_.finest_scale()));
+    frozen_.clear();
+    predicted_.clear();
+    for (const Track &t : tracks) {
+        if (t.state == CT_TRACK_TENTATIVE)
+            continue;
+        predicted_.push_back(to_working(t.box(), s));
+        // Where a confirmed track stands, the background learns nothing: a
+        // person who stops stays foreground. Only tracks that have moved:
+        // a track that never did may stand on a ghost of the model, which
+        // freezing would keep forever.
+        if (t.state == CT_TRACK_CONFIRMED && t.moved)
+            frozen_.push_back(predicted_.back());
+    }
+    background_.apply(t_us, img, s, frozen_.data(), (int)frozen_.size());
+}
+
+// CT_PEDESTRIAN_SIZE: the box's aspect and height against the people's
+// size, the filter eval/recognition.py compares with the template.
+static bool person_sized(const ct_candidate &c, const PersonSize &size)
+{
+    constexpr double kMinAspect = 1.0, kMaxAspect = 4.25, kLow = 0.5, kHigh = 1.5;
+    const double aspect = c.height / c.width;
+    if (!(aspect >= kMinAspect && aspect <= kMaxAspect))
+        return false;
+    if (!size.known())
+        return c.height >= PersonSize::kPriorMinHeight;
+    const double tall = size.height_at(c.top + c.height);
+    return c.height >= kLow * tall && c.height <= kHigh * tall;
+}
+
+void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                           int test, const PersonSize &size, uint64_t *stage_ns)
+{
+    dets_.clear();
+    if (img.empty())
+        return;
+    Stopwatch sw;
+    // The finer scales are for the contour template, which needs a
+    // person's rows; size and aspect alone need none, and would only meet
+    // more fragments (docs/notes/pixels.md, "The working scale").
+    update_background(t_us, img, tracks, size,
+                      test == CT_PEDESTRIAN_SIZE ? Background::kStartScale
+                                                 : Background::kMinScale);
+    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    const int s = background_.scale();
+    blobs_.find(background_.mask(), background_.width(), background_.height(), s,
+                predicted_.data(), (int)predicted_.size(), size, classifier_, blob_rects_);
+    have_mask_ = true;
+    blobs_dropped += (uint64_t)blobs_.dropped();
+    masks_flooded += blobs_.flooded();
+    stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    candidates_.clear();
+    whole_.clear();
+    for (size_t i = 0; i < blob_rects_.size(); i++) {
+        const Rect &r = blob_rects_[i];
+        // A ghost is learnt at once and is no candidate.
+        long frame_edges, model_edges;
+        background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
+        if (model_edges > kGhostEdges * frame_edges) {
+            background_.absorb(img, blobs_.cleaned(), r);
+            continue;
+        }
+        ct_candidate c = classifier_.candidate(
+            blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
+            (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
+        if (test == CT_PEDESTRIAN_SIZE)
+            c.score = person_sized(c, size) ? 1.0f : 0.0f;
+        // A sliver at the image's left or right edge, fewer than
+        // kEdgeMinWidth working pixels wide, has no outline to vote on (its
+        // side is the image's border): no score, so it neither starts nor
+        // continues a track. A background column that stays foreground
+        // there started one (docs/tuning.md, "A sliver at the edge").
+        if ((r.x0 <= 0 || r.x1 >= background_.width()) && r.x1 - r.x0 < kEdgeMinWidth)
+            c.score = 0;
+        candidates_.push_back(c);
+        dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
+        whole_.push_back(blobs_.whole(i));
+    }
+    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                             const ct_detection *dets, size_t n, const PersonSize &size,
+                             uint64_t *stage_ns)
+{
+    Stopwatch sw;
+    update_background(t_us, img, tracks, size, Background::kMinScale);
+    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    classifier_.new_mask();
+    blobs_.clean(background_.mask(), background_.width(), background_.height());
+    have_mask_ = true;
+    stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    dets_.clear();
+    candidates_.clear();
+    for (size_t j = 0; j < n; j++) {
+        const ct_detection &d = dets[j];
+        const ct_candidate c = classifier_.candidate(
+            blobs_.cleaned(), background_.width(), background_.height(),
+            to_working(Box{d.left, d.top, d.width, d.height}, background_.scale()), d.left, d.top,
+            d.width, d.height);
+        candidates_.push_back(c);
+        ct_detection v = d;
+        if (rejects(c))
+            v.score *= c.score;
+        dets_.push_back(v);
+    }
+    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+const uint8_t *PixelCandidates::foreground(int *w, int *h) const
+{
+    *w = background_.width();
+    *h = background_.height();
+    return have_mask_ ? blobs_.cleaned() : nullptr;
+}
+
+void PixelCandidates::barycenter(const Box &b, float *x, float *y) const
+{
+    *x = (float)(b.left + b.width / 2);
+    *y = (float)(b.top + b.height / 2);
+    if (!have_mask_)
+        return;
+    const int s = background_.scale(), w = background_.width(), h = background_.height();
+    const Rect r = to_working(b, s);
+    const uint8_t *m = blobs_.cleaned();
+    long sx = 0, sy = 0, n = 0;
+    for (int yy = std::max(0, r.y0); yy < std::min(h, r.y1); yy++)
+        for (int xx = std::max(0, r.x0); xx < std::min(w, r.x1); xx++)
+            if (m[(size_t)yy * w + xx]) {
+                sx += xx;
+                sy += yy;
+                n++;
+            }
+    if (n > 0) {
+        *x = (float)((sx / (double)n + 0.5) * s);
+        *y = (float)((sy / (double)n + 0.5) * s);
+    }
+}
+
+} // namespace ctrack

@@ -1,0 +1,85 @@
+// Candidates from the pixels: the background model's foreground, its blobs,
+// and the classifier's vote on each (source CT_SOURCE_PIXELS), or on each
+// of the host's detections (verify_detections).
+#ifndef CTRACK_CANDIDATES_H
+#define CTRACK_CANDIDATES_H
+
+#include <cstdint>
+#include <vector>
+
+#include "base/memory.h"
+
+#include "pixels/background.h"
+#include "pixels/blobs.h"
+#include "template/classifier.h"
+#include "track/person_size.h"
+#include "base/planes.h"
+#include "track/track.h"
+
+namespace ctrack {
+
+class PixelCandidates {
+public:
+    // Forgets this step's mask and candidates (at the start of every step).
+    void clear();
+    // Blobs of the frame's foreground as candidates (candidates()) and as
+    // detections scored by their vote (dets()). `tracks` are the engine's,
+    // predicted to this frame: confirmed tracks that have moved freeze the
+    // background under them, and tracks inside a blob split it. The time
+    // of each stage goes to stage_ns.
+    // `test` is a ct_pedestrian_test: what scores each candidate.
+    void find(int64_t t_us, const Planes &img, const Vec<Track> &tracks, int test,
+              const PersonSize &size, uint64_t *stage_ns);
+    // The vote on the foreground inside each of the n detections: one
+    // candidate each, in order, and dets() the detections with the score of
+    // those the vote rejects multiplied by the vote's.
+    void verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                const ct_detection *dets, size_t n, const PersonSize &size,
+                uint64_t *stage_ns);
+
+    const Vec<ct_detection> &dets() const { return dets_; }
+    // Whether this step's candidate i (of find()) is a whole blob: a part
+    // of a split one tells nothing of a person's width.
+    bool whole(size_t i) const { return whole_[i] != 0; }
+    const Vec<ct_candidate> &candidates() const { return candidates_; }
+    Vec<ct_candidate> &candidates() { return candidates_; }
+    // The centroid of this step's foreground inside b, or its centre.
+    void barycenter(const Box &b, float *x, float *y) const;
+    // This step's cleaned foreground mask at the background model's scale
+    // (scale()), or null when the step had no pixels.
+    const uint8_t *foreground(int *w, int *h) const;
+    // Frame pixels across a working pixel of the mask: 1, 2 or 4, chosen
+    // from the people's size.
+    int scale() const { return background_.scale(); }
+    // Whether the background model has learnt a frame (since a reset).
+    bool started() const { return background_.started(); }
+
+    // The background model starts again with the next frame.
+    void reset();
+    // The background model's update of a step stands (commit) or is undone
+    // (rollback, after a failed step).
+    void commit() { background_.commit(); }
+    void rollback() { background_.rollback(); }
+    size_t memory_bytes() const;
+    // Blobs dropped past the cap, and flooded masks, since create.
+    uint64_t blobs_dropped = 0, masks_flooded = 0;
+
+private:
+    // The background model over this frame (tracks that moved are frozen).
+    // The working scale from the people's size, no finer than `finest`.
+    void update_background(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                           const PersonSize &size, int finest);
+
+    Background background_;
+    BlobFinder blobs_;
+    Classifier classifier_;
+    bool have_mask_ = false; // this step
+    Vec<Rect> frozen_, predicted_, blob_rects_;
+    Vec<ct_detection> dets_;
+    Vec<char> whole_;
+    Vec<ct_candidate> candidates_;
+};
+
+} // namespace ctrack
+
+#endif

@@ -1,0 +1,56 @@
+#include "track/score_scale.h"
+
+#include <algorithm>
+
+#include "base/tunable.h"
+
+namespace ctrack {
+
+namespace {
+
+// The share of the scores below the one asked for at most: the best 40%
+// of boxes reach it (docs/tuning.md, "Confirmation").
+CT_TUNABLE(kBelow, "CTRACK_CONFIRM_BELOW", 0.6);
+// The counts are halved when their total reaches this: a long run keeps
+// learning, and no count overflows.
+constexpr uint32_t kMaxTotal = 1u << 20;
+
+} // namespace
+
+void ScoreScale::reset()
+{
+    std::fill(count_, count_ + kBins, 0u);
+    total_ = 0;
+}
+
+void ScoreScale::observe(float score)
+{
+    // Scores outside [0, 1] (or NaN) count at its ends.
+    int b = score >= 1.0f ? kBins - 1 : score > 0.0f ? (int)(score * kBins) : 0;
+    count_[b]++;
+    if (++total_ >= kMaxTotal) {
+        total_ = 0;
+        for (uint32_t &c : count_) {
+            c /= 2;
+            total_ += c;
+        }
+    }
+}
+
+float ScoreScale::confirm(float wanted) const
+{
+    if (total_ == 0)
+        return wanted;
+    // The lower edge of the bin in which kBelow of the scores are reached.
+    const double below = kBelow * total_;
+    uint32_t sum = 0;
+    int b = 0;
+    for (; b < kBins - 1; b++) {
+        sum += count_[b];
+        if (sum >= below)
+            break;
+    }
+    return std::min(wanted, (float)b / kBins);
+}
+
+} // namespace ctrack

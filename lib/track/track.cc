@@ -1,0 +1,152 @@
+#include "track/track.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ctrack {
+
+namespace {
+
+// A walking person covers about one body height per second: the prior
+// uncertainty of a new track's velocity, in box heights per second.
+constexpr double kInitialSpeedSd = 1.0;
+// Box sizes change more slowly than positions: their acceleration noise is
+// this fraction of the centre's.
+constexpr double kSizeNoiseRatio = 0.5;
+constexpr double kMinSide = 1.0;
+// A position from mean shift is trusted this many times less than a
+// detection's, its size this many times less again.
+constexpr double kFollowNoiseRatio = 2.0;
+constexpr double kFollowSizeNoiseRatio = 4.0;
+// The part of a track's box another must cover for it to be occluded.
+constexpr double kOccludedFraction = 0.2;
+
+} // namespace
+
+double iou(const Box &a, const Box &b)
+{
+    double x0 = std::max(a.left, b.left), y0 = std::max(a.top, b.top);
+    double x1 = std::min(a.left + a.width, b.left + b.width);
+    double y1 = std::min(a.top + a.height, b.top + b.height);
+    if (x1 <= x0 || y1 <= y0)
+        return 0;
+    double inter = (x1 - x0) * (y1 - y0);
+    double uni = a.width * a.height + b.width * b.height - inter;
+    return uni > 0 ? inter / uni : 0;
+}
+
+double inside_fraction(const Box &b, int w, int h)
+{
+    double iw = std::min<double>(w, b.left + b.width) - std::max(0.0, b.left);
+    double ih = std::min<double>(h, b.top + b.height) - std::max(0.0, b.top);
+    return iw > 0 && ih > 0 ? iw * ih / (b.width * b.height) : 0;
+}
+
+Box Track::box() const
+{
+    double bw = std::max(w.x, kMinSide), bh = std::max(h.x, kMinSide);
+    return Box{cx.x - bw / 2, cy.x - bh / 2, bw, bh};
+}
+
+void Track::start(const ct_detection &d, double detection_noise, int index, int64_t t_us)
+{
+    double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    double vsd = kInitialSpeedSd * std::max<double>(d.height, kMinSide);
+    cx.init(d.left + d.width / 2.0, sd, vsd);
+    cy.init(d.top + d.height / 2.0, sd, vsd);
+    w.init(d.width, sd, vsd * kSizeNoiseRatio);
+    h.init(d.height, sd, vsd * kSizeNoiseRatio);
+    age = 1;
+    hits = 1;
+    last_update_us = t_us;
+    seen_h = d.height;
+    seen = det_box(d);
+    start_x = d.left + d.width / 2.0;
+    start_y = d.top + d.height / 2.0;
+    det_index = index;
+    class_id = d.class_id;
+    score = d.score;
+    best_score = d.score;
+}
+
+void Track::predict(double dt, double motion_noise)
+{
+    double hgt = std::max(h.x, kMinSide);
+    double accel = motion_noise * hgt;
+    cx.predict(dt, accel);
+    cy.predict(dt, accel);
+    w.predict(dt, accel * kSizeNoiseRatio);
+    h.predict(dt, accel * kSizeNoiseRatio);
+    age++;
+    det_index = -1;
+    followed = false;
+    ms = MeanShiftResult();
+    cue = box();
+}
+
+double Track::centre_nis(const ct_detection &d, double detection_noise) const
+{
+    const double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    return 0.5 * (cx.nis(d.left + d.width / 2.0, sd) + cy.nis(d.top + d.height / 2.0, sd));
+}
+
+double Track::centre_innovation_sd(double detection_noise) const
+{
+    const double sd = detection_noise * std::max(h.x, kMinSide);
+    return std::sqrt(std::max(cx.innovation_var(sd), cy.innovation_var(sd)));
+}
+
+void Track::correct(const ct_detection &d, double detection_noise, int index, int64_t t_us)
+{
+    double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    cx.update(d.left + d.width / 2.0, sd);
+    cy.update(d.top + d.height / 2.0, sd);
+    w.update(d.width, sd);
+    h.update(d.height, sd);
+    hits++;
+    last_update_us = t_us;
+    seen_h = d.height;
+    seen = det_box(d);
+    if (std::hypot(d.left + d.width / 2.0 - start_x, d.top + d.height / 2.0 - start_y) >
+        0.5 * d.height)
+        moved = true;
+    det_index = index;
+    class_id = d.class_id;
+    score = d.score;
+    best_score = std::max(best_score, d.score);
+}
+
+void Track::follow(double detection_noise)
+{
+    double sd = kFollowNoiseRatio * detection_noise * std::max(h.x, kMinSide);
+    cx.update(ms.cx, sd);
+    cy.update(ms.cy, sd);
+    // The scale mean shift found moves the size only slowly (Comaniciu's
+    // blend of the new and old size): small windows drift to a part of the
+    // person, and their similarity stays high.
+    w.update(ms.width, sd * kFollowSizeNoiseRatio);
+    h.update(ms.height, sd * kFollowSizeNoiseRatio);
+    // Without detections nothing measures how the size changes: hold it,
+    // rather than let a trend shrink the box to a part of the person.
+    w.v = 0;
+    h.v = 0;
+    followed = true;
+}
+
+bool occluded(const Vec<Track> &tracks, size_t i)
+{
+    const Box a = tracks[i].box();
+    const double area = a.width * a.height;
+    for (size_t j = 0; j < tracks.size(); j++) {
+        if (j == i || tracks[j].state == CT_TRACK_TENTATIVE)
+            continue;
+        const Box b = tracks[j].box();
+        double iw = std::min(a.left + a.width, b.left + b.width) - std::max(a.left, b.left);
+        double ih = std::min(a.top + a.height, b.top + b.height) - std::max(a.top, b.top);
+        if (iw > 0 && ih > 0 && iw * ih > kOccludedFraction * area)
+            return true;
+    }
+    return false;
+}
+
+} // namespace ctrack

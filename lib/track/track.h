@@ -1,0 +1,92 @@
+// One person's track: its boxes' motion model, its state and what it keeps
+// of the person (colour model, appearance template).
+#ifndef CTRACK_TRACK_H
+#define CTRACK_TRACK_H
+
+#include <cstdint>
+#include <vector>
+
+#include "base/memory.h"
+
+#include "ctrack/ctrack.h"
+#include "meanshift/meanshift.h"
+#include "track/motion.h"
+
+namespace ctrack {
+
+struct Box {
+    double left, top, width, height;
+};
+
+double iou(const Box &a, const Box &b);
+
+inline Box det_box(const ct_detection &d)
+{
+    return Box{d.left, d.top, d.width, d.height};
+}
+
+// The part of a box that lies in a w x h image.
+double inside_fraction(const Box &b, int w, int h);
+
+// One image size: 0 x 0 when unknown.
+struct ImageSize {
+    int width = 0, height = 0;
+    bool known() const { return width > 0 && height > 0; }
+};
+
+struct Track {
+    uint64_t id = 0;              // 0 until confirmed
+    int state = CT_TRACK_TENTATIVE;
+    Axis cx, cy, w, h;
+    int age = 0, hits = 0;
+    int64_t last_update_us = 0;
+    float seen_h = 0; // the height of the last detection
+    Box seen{0, 0, 0, 0}; // the last detection's box
+    // Where it started, and whether it has since moved half its height: a
+    // track that never moved may be a ghost of the background model.
+    double start_x = 0, start_y = 0;
+    bool moved = false;
+    int det_index = -1;
+    int class_id = 0;
+    float score = 0;
+    float best_score = 0; // the highest score of its detections
+    // The box association compares with detections this step: the
+    // prediction, or where mean shift moved it.
+    Box cue{0, 0, 0, 0};
+    // This step's mean shift result, when it ran (rho in Q16).
+    bool followed = false;
+    MeanShiftResult ms;
+    ColorModel model;
+    // Appearance template: a slot of the TemplateBank (-1: none), and when
+    // it was made.
+    int tmpl = -1;
+    int64_t tmpl_us = 0;
+
+    Box box() const;
+    // The motion model started at detection d (position noise
+    // detection_noise box heights) and the bookkeeping of a first hit.
+    void start(const ct_detection &d, double detection_noise, int index, int64_t t_us);
+    // Predicts dt seconds ahead (acceleration noise motion_noise box heights
+    // per second squared) and forgets the last step's match and mean shift.
+    void predict(double dt, double motion_noise);
+    // The centre's normalized innovation squared for detection d (the mean
+    // of both axes), before correct().
+    double centre_nis(const ct_detection &d, double detection_noise) const;
+    // The standard deviation of a detection's centre about the prediction
+    // on the less certain axis (a detection's noise at the track's height).
+    double centre_innovation_sd(double detection_noise) const;
+    // Corrects the motion model by detection d, and records the hit.
+    void correct(const ct_detection &d, double detection_noise, int index, int64_t t_us);
+    // Corrects the motion model by where mean shift followed the person
+    // (this->ms), trusted less than a detection.
+    void follow(double detection_noise);
+};
+
+// Whether another non-tentative track covers more than a fifth of track i's
+// box: it is then not followed by mean shift, and its colour model and
+// appearance template are left as they are.
+bool occluded(const Vec<Track> &tracks, size_t i);
+
+} // namespace ctrack
+
+#endif
