@@ -1,7 +1,9 @@
 #include "api/config.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 
 #include "api/error.h"
 #include "api/sized.h"
@@ -48,21 +50,101 @@ ct_config default_config()
 
 namespace {
 
-bool in_range(double x, double lo, double hi)
+// Every field's range: [lo, hi], open at an end where said; a bound may be
+// another field's value (low_score is at most high_score). The checks run
+// in this order, and the first wrong field is the one reported.
+struct FieldRange {
+    const char *name;
+    char type; // 'f' float, 'd' double, 'i' int32_t
+    size_t offset;
+    double lo, hi;
+    bool lo_open, hi_open;
+    const char *lo_field, *hi_field; // bounds that are fields, or null
+    const char *unit;                // after the range in a message
+};
+
+#define CT_FIELD(name, type, ...) {#name, type, offsetof(ct_config, name), __VA_ARGS__}
+constexpr FieldRange kRanges[] = {
+    CT_FIELD(source, 'i', 0, 1, false, false, nullptr, nullptr,
+             "(CT_SOURCE_DETECTIONS or CT_SOURCE_PIXELS)"),
+    CT_FIELD(high_score, 'f', 0, 1, false, false, nullptr, nullptr, ""),
+    CT_FIELD(low_score, 'f', 0, 1, false, false, nullptr, "high_score", ""),
+    CT_FIELD(match_iou, 'f', 0, 1, true, false, nullptr, nullptr, ""),
+    CT_FIELD(low_match_iou, 'f', 0, 1, true, false, nullptr, nullptr, ""),
+    CT_FIELD(tentative_match_iou, 'f', 0, 1, true, false, nullptr, nullptr, ""),
+    CT_FIELD(min_hits, 'i', 1, 1000, false, false, nullptr, nullptr, "steps"),
+    CT_FIELD(lost_lifetime, 'd', 0, 3600, false, false, nullptr, nullptr, "s"),
+    CT_FIELD(report_lost_time, 'd', 0, 3600, false, false, nullptr, "lost_lifetime", "s"),
+    CT_FIELD(motion_noise, 'f', 0, 100, true, false, nullptr, nullptr, "box heights/s^2"),
+    CT_FIELD(detection_noise, 'f', 0, 10, true, false, nullptr, nullptr, "box heights"),
+    CT_FIELD(clip_boxes, 'i', 0, 1, false, false, nullptr, nullptr, "(0 or 1)"),
+    CT_FIELD(max_tracks, 'i', 1, 100000, false, false, nullptr, nullptr, "tracks"),
+    CT_FIELD(mean_shift, 'i', 0, 1, false, false, nullptr, nullptr, "(0 or 1)"),
+    CT_FIELD(mean_shift_min_similarity, 'f', 0, 1, true, true, nullptr, nullptr, ""),
+    CT_FIELD(mean_shift_max_time, 'd', 0, 3600, false, false, nullptr, nullptr, "s"),
+    CT_FIELD(model_learning_rate, 'f', 0, 1, false, false, nullptr, nullptr, ""),
+    CT_FIELD(mean_shift_coarse_below, 'f', 0, 1, false, true, nullptr, nullptr, ""),
+    CT_FIELD(appearance, 'i', 0, 1, false, false, nullptr, nullptr, "(0 or 1)"),
+    CT_FIELD(appearance_weight, 'f', 0, 100, false, false, nullptr, nullptr, ""),
+    CT_FIELD(reid_min_similarity, 'f', 0, 1, true, true, nullptr, nullptr, ""),
+    CT_FIELD(reid_max_speed, 'f', 0, 1000, false, false, nullptr, nullptr, "box heights/s"),
+    CT_FIELD(candidate_min_score, 'f', 0, 1, false, false, "low_score", nullptr, ""),
+    CT_FIELD(verify_detections, 'i', 0, 1, false, false, nullptr, nullptr, "(0 or 1)"),
+    CT_FIELD(start_score, 'f', 0, 1, false, false, nullptr, nullptr, ""),
+    CT_FIELD(report_lost_sd, 'f', 0, 10, false, false, nullptr, nullptr, ""),
+    CT_FIELD(pedestrian_test, 'i', 0, 1, false, false, nullptr, nullptr,
+             "(CT_PEDESTRIAN_TEMPLATE or CT_PEDESTRIAN_SIZE)"),
+    CT_FIELD(size_gate, 'f', 0, 10, false, false, nullptr, nullptr, ""),
+    CT_FIELD(confirm_score, 'f', 0, 1, false, false, nullptr, nullptr, ""),
+};
+#undef CT_FIELD
+const FieldRange *range_of(const char *name)
 {
-    return std::isfinite(x) && x >= lo && x <= hi;
+    for (const FieldRange &r : kRanges)
+        if (std::strcmp(r.name, name) == 0)
+            return &r;
+    return nullptr;
 }
 
-} // namespace
-
-int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
+double value_of(const ct_config &c, const FieldRange &r)
 {
-    if (msg && msg_len > 0)
-        msg[0] = '\0';
-    if (!in)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "config: NULL pointer");
-    ct_config c = default_config();
-    switch (read_sized(in, in->size, kConfigSizeV1, &c)) {
+    const char *p = reinterpret_cast<const char *>(&c) + r.offset;
+    switch (r.type) {
+    case 'f': return *reinterpret_cast<const float *>(p);
+    case 'd': return *reinterpret_cast<const double *>(p);
+    default: return *reinterpret_cast<const int32_t *>(p);
+    }
+}
+
+// A bound as a message shows it: a number, or the field it is and its value.
+void bound_text(const ct_config &c, double v, const char *field, char *out, size_t len)
+{
+    if (field)
+        std::snprintf(out, len, "%s = %g", field, value_of(c, *range_of(field)));
+    else
+        std::snprintf(out, len, "%g", v);
+}
+
+// Checks field r of c; on failure, the message and CT_ERROR_INVALID_ARGUMENT.
+int check_field(const ct_config &c, const FieldRange &r, char *msg, size_t msg_len)
+{
+    const double v = value_of(c, r);
+    const double lo = r.lo_field ? value_of(c, *range_of(r.lo_field)) : r.lo;
+    const double hi = r.hi_field ? value_of(c, *range_of(r.hi_field)) : r.hi;
+    if (std::isfinite(v) && (r.lo_open ? v > lo : v >= lo) && (r.hi_open ? v < hi : v <= hi))
+        return CT_OK;
+    char a[64], b[64];
+    bound_text(c, lo, r.lo_field, a, sizeof a);
+    bound_text(c, hi, r.hi_field, b, sizeof b);
+    return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "config.%s: %g is not in %c%s, %s%c%s%s",
+                r.name, v, r.lo_open ? '(' : '[', a, b, r.hi_open ? ')' : ']',
+                *r.unit ? " " : "", r.unit);
+}
+
+// The caller's struct over the defaults: sized as one this library can read.
+int read_config(const ct_config *in, ct_config *c, char *msg, size_t msg_len)
+{
+    switch (read_sized(in, in->size, kConfigSizeV1, c)) {
     case SizedResult::too_small:
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
                     "config.size: %zu is smaller than any ct_config (%zu); "
@@ -81,110 +163,23 @@ int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
     case SizedResult::ok:
         break;
     }
-    if (c.source != CT_SOURCE_DETECTIONS && c.source != CT_SOURCE_PIXELS)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.source: %d is not a ct_source value", (int)c.source);
-    if (!in_range(c.high_score, 0, 1))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.high_score: %g is not in [0, 1]", (double)c.high_score);
-    if (!in_range(c.low_score, 0, c.high_score))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.low_score: %g is not in [0, high_score = %g]",
-                    (double)c.low_score, (double)c.high_score);
-    const struct {
-        const char *name;
-        float value;
-    } ious[] = {{"match_iou", c.match_iou},
-                {"low_match_iou", c.low_match_iou},
-                {"tentative_match_iou", c.tentative_match_iou}};
-    for (const auto &g : ious)
-        if (!in_range(g.value, 0, 1) || g.value == 0)
-            return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                        "config.%s: %g is not in (0, 1]", g.name, (double)g.value);
-    if (c.min_hits < 1 || c.min_hits > 1000)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.min_hits: %d is not in [1, 1000]", (int)c.min_hits);
-    if (!in_range(c.lost_lifetime, 0, 3600))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.lost_lifetime: %g s is not in [0, 3600]", c.lost_lifetime);
-    if (!in_range(c.report_lost_time, 0, c.lost_lifetime))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.report_lost_time: %g s is not in [0, lost_lifetime = %g]",
-                    c.report_lost_time, c.lost_lifetime);
-    if (!in_range(c.motion_noise, 0, 100) || c.motion_noise == 0)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.motion_noise: %g is not in (0, 100] box heights/s^2",
-                    (double)c.motion_noise);
-    if (!in_range(c.detection_noise, 0, 10) || c.detection_noise == 0)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.detection_noise: %g is not in (0, 10] box heights",
-                    (double)c.detection_noise);
-    if (c.clip_boxes != 0 && c.clip_boxes != 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.clip_boxes: %d is not 0 or 1", (int)c.clip_boxes);
-    if (c.max_tracks < 1 || c.max_tracks > 100000)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.max_tracks: %d is not in [1, 100000]", (int)c.max_tracks);
-    if (c.mean_shift != 0 && c.mean_shift != 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.mean_shift: %d is not 0 or 1", (int)c.mean_shift);
-    if (!in_range(c.mean_shift_min_similarity, 0, 1) || c.mean_shift_min_similarity == 0 ||
-        c.mean_shift_min_similarity == 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.mean_shift_min_similarity: %g is not in (0, 1)",
-                    (double)c.mean_shift_min_similarity);
-    if (!in_range(c.mean_shift_max_time, 0, 3600))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.mean_shift_max_time: %g s is not in [0, 3600]",
-                    c.mean_shift_max_time);
-    if (!in_range(c.model_learning_rate, 0, 1))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.model_learning_rate: %g is not in [0, 1]",
-                    (double)c.model_learning_rate);
-    if (!in_range(c.mean_shift_coarse_below, 0, 1) || c.mean_shift_coarse_below == 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.mean_shift_coarse_below: %g is not in [0, 1)",
-                    (double)c.mean_shift_coarse_below);
-    if (c.appearance != 0 && c.appearance != 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.appearance: %d is not 0 or 1", (int)c.appearance);
-    if (!in_range(c.appearance_weight, 0, 100))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.appearance_weight: %g is not in [0, 100]",
-                    (double)c.appearance_weight);
-    if (!in_range(c.reid_min_similarity, 0, 1) || c.reid_min_similarity == 0 ||
-        c.reid_min_similarity == 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.reid_min_similarity: %g is not in (0, 1)",
-                    (double)c.reid_min_similarity);
-    if (!in_range(c.reid_max_speed, 0, 1000))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.reid_max_speed: %g is not in [0, 1000] box heights/s",
-                    (double)c.reid_max_speed);
-    if (!in_range(c.candidate_min_score, c.low_score, 1))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.candidate_min_score: %g is not in [low_score = %g, 1]",
-                    (double)c.candidate_min_score, (double)c.low_score);
-    if (c.verify_detections != 0 && c.verify_detections != 1)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.verify_detections: %d is not 0 or 1", (int)c.verify_detections);
-    if (!in_range(c.start_score, 0, 1))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.start_score: %g is not in [0, 1]", (double)c.start_score);
-    if (!in_range(c.report_lost_sd, 0, 10))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.report_lost_sd: %g is not in [0, 10]", (double)c.report_lost_sd);
-    if (c.pedestrian_test != CT_PEDESTRIAN_TEMPLATE && c.pedestrian_test != CT_PEDESTRIAN_SIZE)
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.pedestrian_test: %d is not CT_PEDESTRIAN_TEMPLATE (0) or "
-                    "CT_PEDESTRIAN_SIZE (1)",
-                    (int)c.pedestrian_test);
-    if (!in_range(c.size_gate, 0, 10))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.size_gate: %g is not in [0, 10]", (double)c.size_gate);
-    if (!in_range(c.confirm_score, 0, 1))
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.confirm_score: %g is not in [0, 1]", (double)c.confirm_score);
+    return CT_OK;
+}
+
+} // namespace
+
+int load_config(const ct_config *in, ct_config *out, char *msg, size_t msg_len)
+{
+    if (msg && msg_len > 0)
+        msg[0] = '\0';
+    if (!in)
+        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "config: NULL pointer");
+    ct_config c = default_config();
+    if (const int st = read_config(in, &c, msg, msg_len))
+        return st;
+    for (const FieldRange &r : kRanges)
+        if (const int st = check_field(c, r, msg, msg_len))
+            return st;
     if (out)
         *out = c;
     return CT_OK;

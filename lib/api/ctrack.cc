@@ -444,18 +444,19 @@ int ct_tracker_get_stats(const ct_tracker *tracker, ct_stats *stats)
     s.steps = tracker->steps;
     s.feed_ns = tracker->feed_ns;
     const ctrack::Engine &e = tracker->engine;
+    const ctrack::Counters &c = e.counters();
     for (int i = 0; i < CT_STATS_MAX_STAGES; i++)
-        s.stage_ns[i] = e.stage_ns()[i];
+        s.stage_ns[i] = c.stage_ns[i];
     s.stage_ns[CT_STAGE_VALIDATE] = tracker->validate_ns;
     s.stage_ns[CT_STAGE_CONVERT] = tracker->convert_ns;
     s.live_tracks = e.live_tracks();
     s.memory_bytes = sizeof(ct_tracker) - sizeof(ctrack::Engine) + e.memory_bytes() +
                      tracker->converted.capacity() * sizeof(int16_t);
-    s.mean_shift_runs = e.mean_shift_runs();
-    s.ddis_runs = e.ddis_runs();
-    s.template_builds = e.template_builds();
-    s.blobs_dropped = e.blobs_dropped();
-    s.masks_flooded = e.masks_flooded();
+    s.mean_shift_runs = c.mean_shift_runs;
+    s.ddis_runs = c.ddis_runs;
+    s.template_builds = c.template_builds;
+    s.blobs_dropped = c.blobs_dropped;
+    s.masks_flooded = c.masks_flooded;
     ctrack::write_sized(stats, size, s);
     return CT_OK;
 }

@@ -14,10 +14,12 @@ constexpr size_t kDescFloats = (size_t)kPoints * kDescDim;
 
 } // namespace
 
-void TemplateBank::begin(const Planes &img, const ct_detection *dets, size_t n)
+void TemplateBank::begin(const Planes &img, const ct_detection *dets, size_t n,
+                         Counters *counters)
 {
     img_ = img;
     dets_ = dets;
+    counters_ = counters;
     desc_of_.assign(n, -1);
     det_desc_.clear();
 }
@@ -39,7 +41,7 @@ double TemplateBank::similarity(const Track &t, int det)
 {
     if (t.tmpl < 0)
         return 1.0;
-    ddis_runs++;
+    counters_->ddis_runs++;
     return ddis_.ddis(templates_[(size_t)t.tmpl], descriptors(det));
 }
 
@@ -70,7 +72,7 @@ void TemplateBank::learn(Vec<Track> &tracks, const Vec<Track> &saved,
         slot_used_[slot] = 1;
         t.tmpl = (int)slot;
         t.tmpl_us = t_us;
-        builds++;
+        counters_->template_builds++;
     }
 }
 

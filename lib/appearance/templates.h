@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/counters.h"
 #include "base/memory.h"
 
 #include "appearance/appearance.h"
@@ -17,11 +18,12 @@ namespace ctrack {
 
 class TemplateBank {
 public:
-    // This step's frame and detections. A detection is described when it is
-    // first compared or makes a template, at most once a step: only those a
-    // gate lets near a track cost anything. img and dets must stay valid
-    // until the step ends.
-    void begin(const Planes &img, const ct_detection *dets, size_t n);
+    // This step's frame and detections, and the counters its DDIS and
+    // template builds add to. A detection is described when it is first
+    // compared or makes a template, at most once a step: only those a gate
+    // lets near a track cost anything. img, dets and counters must stay
+    // valid until the step ends.
+    void begin(const Planes &img, const ct_detection *dets, size_t n, Counters *counters);
     // DDIS of this step's detection det against the track's template; a
     // track without one looks like anything (1).
     double similarity(const Track &t, int det);
@@ -34,9 +36,6 @@ public:
     void learn(Vec<Track> &tracks, const Vec<Track> &saved, int64_t t_us);
     size_t memory_bytes() const;
 
-    // DDIS evaluations and template builds, for ct_stats.
-    uint64_t ddis_runs = 0, builds = 0;
-
 private:
     // Detection det's descriptors, described on first use.
     const float *descriptors(int det);
@@ -45,6 +44,7 @@ private:
     Vec<char> slot_used_;
     Planes img_;
     const ct_detection *dets_ = nullptr;
+    Counters *counters_ = nullptr;
     Vec<int> desc_of_;    // per detection: its descriptors' slot, or -1
     Vec<float> det_desc_; // described detections, kPoints * kDescDim each
     Describer describer_;

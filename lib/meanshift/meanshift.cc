@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "dsp/dsp.h"
 #include "pixels/mask.h"
 
 namespace ctrack {
@@ -95,6 +96,45 @@ void MeanShift::clear_hist()
     n_touched_ = 0;
 }
 
+namespace {
+
+// One row's run of the window (n samples s pixels apart from column x,
+// with their column terms and chroma offsets) into the histogram: each
+// sample's kernel weight to its bin, its bin to *out; returns the row's
+// weight.
+CT_ALWAYS_INLINE uint32_t bin_run(const Planes &img, int y, int x, int s, const int32_t *cols,
+                                  const int32_t *chroma, int n, uint32_t rk, uint32_t *hist,
+                                  uint16_t **out)
+{
+    uint32_t row_total = 0;
+    uint16_t *o = *out;
+    const uint8_t *py = img.y + (size_t)y * img.y_stride + x;
+    if (img.color) {
+        const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
+        const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
+        for (int i = 0; i < n; i++, py += s) {
+            const int32_t c = chroma[i];
+            const int bin = colour_bin(*py, urow[c], vrow[c]);
+            const uint32_t k = rk - (uint32_t)cols[i];
+            hist[bin] += k;
+            row_total += k;
+            *o++ = (uint16_t)bin;
+        }
+    } else {
+        for (int i = 0; i < n; i++, py += s) {
+            const int bin = grey_bin(*py);
+            const uint32_t k = rk - (uint32_t)cols[i];
+            hist[bin] += k;
+            row_total += k;
+            *o++ = (uint16_t)bin;
+        }
+    }
+    *out = o;
+    return row_total;
+}
+
+} // namespace
+
 uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, double hh)
 {
     clear_hist();
@@ -166,32 +206,9 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
             i0++;
         while (row + cols[i1 - 1] >= kKernelOne)
             i1--;
-        const uint8_t *yrow = img.y + (size_t)y * img.y_stride;
         runs[n_runs++] = Run{x0 + i0 * s, y, i1 - i0};
         const uint32_t rk = (uint32_t)(kKernelOne - row); // Epanechnikov: rk - column term
-        uint32_t row_total = 0;
-        const uint8_t *py = yrow + x0 + (size_t)i0 * s;
-        if (img.color) {
-            const uint8_t *urow = img.u + (size_t)(y >> 1) * img.u_stride;
-            const uint8_t *vrow = img.v + (size_t)(y >> 1) * img.v_stride;
-            for (int i = i0; i < i1; i++, py += s) {
-                const int32_t c = chroma[i];
-                const int bin = colour_bin(*py, urow[c], vrow[c]);
-                const uint32_t k = rk - (uint32_t)cols[i];
-                hist[bin] += k;
-                row_total += k;
-                *out++ = (uint16_t)bin;
-            }
-        } else {
-            for (int i = i0; i < i1; i++, py += s) {
-                const int bin = grey_bin(*py);
-                const uint32_t k = rk - (uint32_t)cols[i];
-                hist[bin] += k;
-                row_total += k;
-                *out++ = (uint16_t)bin;
-            }
-        }
-        total += row_total;
+        total += bin_run(img, y, x0 + i0 * s, s, cols + i0, chroma + i0, i1 - i0, rk, hist, &out);
     }
     n_runs_ = n_runs;
     list_touched();

@@ -301,8 +301,8 @@ void Background::resample(const Planes &img)
     }
 }
 
-void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *frozen,
-                       int n_frozen)
+Background::Update Background::prepare(const Planes &img, int scale, const Rect *frozen,
+                                       int n_frozen)
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
@@ -311,10 +311,10 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     swap_models();
     kept_ = true;
     scale = std::min(std::max(scale, finest_), kMaxScale);
-    const bool restart =
-        frames_ == 0 || img.width != fw_ || img.height != fh_ || img.color != color_;
-    const bool rescale = !restart && scale != scale_;
-    if (!restart) {
+    Update u;
+    u.restart = frames_ == 0 || img.width != fw_ || img.height != fh_ || img.color != color_;
+    u.rescale = !u.restart && scale != scale_;
+    if (!u.restart) {
         const size_t n = (size_t)w_ * h_;
         my_.resize(n);
         vy_.resize(n);
@@ -328,18 +328,22 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     }
     // The exposure against the model as it is (at its old scale, where the
     // frozen boxes, at the new one, do not apply).
-    set_gain(restart ? 1.0 : exposure_ratio(img, rescale ? nullptr : frozen,
-                                            rescale ? 0 : n_frozen));
-    if (restart) {
+    set_gain(u.restart ? 1.0
+                       : exposure_ratio(img, u.rescale ? nullptr : frozen,
+                                        u.rescale ? 0 : n_frozen));
+    if (u.restart) {
         scale_ = scale;
         start(img);
-    } else if (rescale) {
+    } else if (u.rescale) {
         scale_ = scale;
         size_for(img);
         resample(img);
     }
-    if (restart)
-        start_us_ = last_us_ = t_us;
+    return u;
+}
+
+BgRow Background::rates(int64_t t_us)
+{
     const bool warm = elapsed_us(t_us, start_us_) < (uint64_t)kWarmupUs;
     const int step =
         warm ? warmup_step(frames_ == 0 ? kFirstFrameUs : elapsed_us(t_us, last_us_)) : 1;
@@ -353,7 +357,6 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
             ? std::max(kVMinLowest,
                        (int)std::lround(kVMin * std::min(1.0, noise_.contrast / kContrastRef)))
             : kVMin;
-    // This frame's rates and decision levels, the same for every row.
     BgRow rates{};
     rates.step = step;
     rates.warm = warm;
@@ -363,12 +366,41 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     rates.shadow_chroma =
         std::max(kShadowChroma, (int)std::lround(kShadowNoise * noise_.chroma));
     rates.black = std::max(0, (int)std::lround(noise_.dark - kBlackBelow));
-    // The noise is sampled on a grid of every 4th working pixel, from the
-    // model before this frame (not while it starts: it is the image then).
-    const bool sample = !restart;
-    if (sample)
-        noise_samples_.begin();
+    return rates;
+}
+
+BgGather Background::gather(const Planes &img, int y, const uint8_t **iu,
+                            const uint8_t **iv)
+{
     const int sc = scale_;
+    BgGather g;
+    g.src_y = img.y + (size_t)(y * sc) * img.y_stride;
+    g.lut = gain_ == 1.0 ? nullptr : gain_lut_;
+    g.w = w_;
+    g.scale = sc;
+    g.iy = line_y_.data();
+    g.iu = line_u_.data();
+    g.iv = line_v_.data();
+    g.su = g.sv = nullptr;
+    // The 4:2:0 chroma sample under working pixel x: x * scale / 2.
+    g.c_half = sc == 1;
+    g.c_step = (int)img.c_step * (sc == 1 ? 1 : sc / 2);
+    *iu = g.iu;
+    *iv = g.iv;
+    if (color_) {
+        g.su = img.u + (size_t)((y * sc) >> 1) * img.u_stride;
+        g.sv = img.v + (size_t)((y * sc) >> 1) * img.v_stride;
+        if (g.c_step == 1 && !g.c_half) { // I420 at scale 2: read in place
+            *iu = g.su;
+            *iv = g.sv;
+        }
+    }
+    return g;
+}
+
+void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen,
+                             const BgRow &rates, Update u, bool sample)
+{
     const bool color = color_;
     const int w = w_, h = h_;
     // Each row's samples are gathered first into contiguous buffers (I420's
@@ -378,30 +410,9 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     line_v_.resize(w);
     line_dy_.resize(w);
     line_dc_.resize(w);
-    const bool identity = gain_ == 1.0;
     for (int y = 0; y < h; y++) {
-        BgGather g;
-        g.src_y = img.y + (size_t)(y * sc) * img.y_stride;
-        g.lut = identity ? nullptr : gain_lut_;
-        g.w = w;
-        g.scale = sc;
-        g.iy = line_y_.data();
-        g.iu = line_u_.data();
-        g.iv = line_v_.data();
-        g.su = g.sv = nullptr;
-        // The 4:2:0 chroma sample under working pixel x: x * scale / 2.
-        g.c_half = sc == 1;
-        g.c_step = (int)img.c_step * (sc == 1 ? 1 : sc / 2);
-        const uint8_t *iu = g.iu, *iv = g.iv;
-        if (color) {
-            g.su = img.u + (size_t)((y * sc) >> 1) * img.u_stride;
-            g.sv = img.v + (size_t)((y * sc) >> 1) * img.v_stride;
-            if (g.c_step == 1 && !g.c_half) { // I420 at scale 2: read in place
-                iu = g.su;
-                iv = g.sv;
-            }
-        }
-        dsp_.bg_gather_row(g);
+        const uint8_t *iu, *iv;
+        dsp_.bg_gather_row(gather(img, y, &iu, &iv));
         const size_t row = (size_t)y * w;
         const uint8_t *iy = line_y_.data();
         const uint8_t *frozen_y = frozen_row(frozen, n_frozen, y);
@@ -409,10 +420,10 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
         // the image's own samples (and V at kBgVMax), or at a new scale the
         // old model resampled. Never the buffers written.
         BgRow r = rates;
-        r.om = restart ? iy : (rescale ? rs_my_ : old_my_).data() + row;
-        r.ov = restart ? line_vmax_.data() : (rescale ? rs_vy_ : old_vy_).data() + row;
-        r.ou = restart ? iu : (rescale ? rs_mu_ : old_mu_).data() + row;
-        r.ow = restart ? iv : (rescale ? rs_mv_ : old_mv_).data() + row;
+        r.om = u.restart ? iy : (u.rescale ? rs_my_ : old_my_).data() + row;
+        r.ov = u.restart ? line_vmax_.data() : (u.rescale ? rs_vy_ : old_vy_).data() + row;
+        r.ou = u.restart ? iu : (u.rescale ? rs_mu_ : old_mu_).data() + row;
+        r.ow = u.restart ? iv : (u.rescale ? rs_mv_ : old_mv_).data() + row;
         // The noise's rows: the update leaves the image's differences from
         // the model before it in line_dy_ and line_dc_.
         const bool noise_row = sample && y % 4 == 0;
@@ -436,10 +447,26 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
             noise_samples_.levels(r.my, w);
         }
     }
+}
+
+void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *frozen,
+                       int n_frozen)
+{
+    const Update u = prepare(img, scale, frozen, n_frozen);
+    if (u.restart)
+        start_us_ = last_us_ = t_us;
+    // This frame's rates and decision levels, the same for every row.
+    const BgRow r = rates(t_us);
+    // The noise is sampled on a grid of every 4th working pixel, from the
+    // model before this frame (not while it starts: it is the image then).
+    const bool sample = !u.restart;
     if (sample)
-        noise_.end(noise_samples_, restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
+        noise_samples_.begin();
+    update_rows(img, frozen, n_frozen, r, u, sample);
+    if (sample)
+        noise_.end(noise_samples_, u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
-    if (rescale)
+    if (u.rescale)
         release_resampled();
 }
 

@@ -78,6 +78,22 @@ public:
     size_t memory_bytes() const;
 
 private:
+    // How this frame's update begins: the model started from the frame
+    // (the first frame, or another size or format), or at another scale.
+    struct Update {
+        bool restart = false, rescale = false;
+    };
+    // The model before the frame kept for rollback(), sized, resampled or
+    // started for it, and the frame's exposure read.
+    Update prepare(const Planes &img, int scale, const Rect *frozen, int n_frozen);
+    // This frame's rates and decision levels, t_us after the last.
+    BgRow rates(int64_t t_us);
+    // Row y's gathering (into line_y_, and line_u_ and line_v_ unless
+    // *iu and *iv point at the frame's own chroma row).
+    BgGather gather(const Planes &img, int y, const uint8_t **iu, const uint8_t **iv);
+    // Every row's update and foreground; the noise sampled when asked.
+    void update_rows(const Planes &img, const Rect *frozen, int n_frozen, const BgRow &rates,
+                     Update u, bool sample);
     void start(const Planes &img);
     // Sizes the buffers for the image at scale_.
     void size_for(const Planes &img);

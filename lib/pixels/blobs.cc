@@ -264,31 +264,40 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
 void BlobFinder::find(const uint8_t *mask, int w, int h, int scale, const Rect *predicted,
                       int n_predicted, const PersonSize &size, Classifier &cls, Vec<Rect> &out)
 {
-    const int s = scale; // frame pixels across a working pixel
-    Impl &m = *impl_;
     out.clear();
     whole_.clear();
     dropped_ = 0;
     flooded_ = false;
     clean(mask, w, h);
     cls.new_mask(); // the votes remembered were on another mask
-    // A mask more than kMaxForeground foreground is no picture of people (a
-    // light switched, the camera moved, noise the model has not learnt):
-    // nothing in it is a candidate.
+    if (!outer_blobs())
+        return;
+    merge_fragments(scale, size, cls);
+    for (const Rect &r : impl_->blobs)
+        if (!speck(r, scale, size))
+            split(r, scale, predicted, n_predicted, size, cls, out);
+}
+
+bool BlobFinder::outer_blobs()
+{
+    Impl &m = *impl_;
     Vec<Rect> &b = m.blobs;
     b.clear();
     if (m.area.x1 > m.area.x0) {
+        // A mask more than kMaxForeground foreground is no picture of
+        // people (a light switched, the camera moved, noise the model has
+        // not learnt): nothing in it is a candidate.
         long fg = 0;
         for (int y = m.area.y0; y < m.area.y1; y++)
             fg += count_nonzero(m.at(m.area.x0, y), m.area.x1 - m.area.x0);
-        if (fg > kMaxForeground * w * h) {
+        if (fg > kMaxForeground * m.w * m.h) {
             flooded_ = true;
-            return;
+            return false;
         }
         // The boxes of the outer regions of the foreground's area (it has a
         // margin of background all round, or ends at the image's edge: the
         // whole mask's regions), in the order findContours gave them.
-        m.regions.find(m.clean.data(), w, m.area, b);
+        m.regions.find(m.clean.data(), m.w, m.area, b);
     }
     // At most kMaxBlobs go on, the largest (then the first found): merging
     // fragments looks at every pair, and a flickering mask could make
@@ -300,10 +309,16 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, int scale, const Rect *
         dropped_ = (int)b.size() - kMaxBlobs;
         b.resize(kMaxBlobs);
     }
+    return true;
+}
 
+void BlobFinder::merge_fragments(int s, const PersonSize &size, Classifier &cls)
+{
     // Fragments of one person (head, torso, legs split by clothes that match
     // the background) lie one above the other: merge them while the union
     // still has a person's shape.
+    Impl &m = *impl_;
+    Vec<Rect> &b = m.blobs;
     // Each blob's vote, computed when first needed (NaN: not yet).
     Vec<float> &votes = m.votes;
     votes.assign(b.size(), NAN);
@@ -342,101 +357,107 @@ void BlobFinder::find(const uint8_t *mask, int w, int h, int scale, const Rect *
                 merged = true;
             }
     }
+}
 
-    for (const Rect &r : b) {
-        const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
-        int area = 0;
-        for (int y = r.y0; y < r.y1; y++)
-            area += count_nonzero(m.at(r.x0, y), r.x1 - r.x0);
-        // A speck or a fragment: under a part of the person who would stand
-        // where the blob's feet are (working pixels; while the size model
-        // knows nothing, under the prior's smallest person).
-        if (size.known()) {
-            const double person_h = size.height_at(r.y1 * s) / s;
-            const double person_w = size.width_at(r.y1 * s) / s;
-            if (area < kMinAreaFraction * person_h * person_w ||
-                bh < kMinHeightFraction * person_h)
-                continue;
-        } else if (area * s * s < kPriorMinArea || bh * s < kPriorMinRows) {
-            continue;
+bool BlobFinder::speck(const Rect &r, int s, const PersonSize &size) const
+{
+    const Impl &m = *impl_;
+    int area = 0;
+    for (int y = r.y0; y < r.y1; y++)
+        area += count_nonzero(m.at(r.x0, y), r.x1 - r.x0);
+    // A speck or a fragment: under a part of the person who would stand
+    // where the blob's feet are (working pixels; while the size model knows
+    // nothing, under the prior's smallest person).
+    const int bh = r.y1 - r.y0;
+    if (size.known()) {
+        const double person_h = size.height_at(r.y1 * s) / s;
+        const double person_w = size.width_at(r.y1 * s) / s;
+        return area < kMinAreaFraction * person_h * person_w ||
+               bh < kMinHeightFraction * person_h;
+    }
+    return area * s * s < kPriorMinArea || bh * s < kPriorMinRows;
+}
+
+int BlobFinder::emptiest(const Rect &r, int lo, int hi, int want) const
+{
+    const int bh = r.y1 - r.y0;
+    int best = want, best_n = bh + 1;
+    for (int x = lo; x <= hi; x++) {
+        const int n = impl_->column_count(x, r.y0, r.y1);
+        if (n < best_n || (n == best_n && std::abs(x - want) < std::abs(best - want))) {
+            best_n = n;
+            best = x;
         }
-        // A group: wider than one person of this height (of the size
-        // model's width where it knows it).
-        const double person_w =
-            size.known() ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
-        const int parts = (int)std::lround(bw / person_w);
-        // The predicted centres of the tracks inside, those closer than
-        // kMinCentreGap heights to the one before counted once.
-        Vec<int> &centres = m.centres;
-        centres.clear();
-        for (int k = 0; k < n_predicted; k++) {
-            const Rect &p = predicted[k];
-            int c = (p.x0 + p.x1) / 2;
-            if (c > r.x0 && c < r.x1 && p.y1 > r.y0 && p.y0 < r.y1)
-                centres.push_back(c);
+    }
+    return best;
+}
+
+void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predicted,
+                       const PersonSize &size, Classifier &cls, Vec<Rect> &out)
+{
+    Impl &m = *impl_;
+    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
+    // A group: wider than one person of this height (of the size model's
+    // width where it knows it).
+    const double person_w = size.known() ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
+    const int parts = (int)std::lround(bw / person_w);
+    // The predicted centres of the tracks inside, those closer than
+    // kMinCentreGap heights to the one before counted once.
+    Vec<int> &centres = m.centres;
+    centres.clear();
+    for (int k = 0; k < n_predicted; k++) {
+        const Rect &p = predicted[k];
+        int c = (p.x0 + p.x1) / 2;
+        if (c > r.x0 && c < r.x1 && p.y1 > r.y0 && p.y0 < r.y1)
+            centres.push_back(c);
+    }
+    std::sort(centres.begin(), centres.end());
+    size_t kept = 0;
+    for (size_t k = 0; k < centres.size(); k++)
+        if (kept == 0 || centres[k] - centres[kept - 1] >= kMinCentreGap * bh)
+            centres[kept++] = centres[k];
+    centres.resize(kept);
+    int head_cut = -1;
+    if (parts < 2 && centres.size() < 2) {
+        head_cut = between_heads(r, cls);
+        if (head_cut < 0) {
+            out.push_back(r);
+            whole_.push_back(1);
+            return;
         }
-        std::sort(centres.begin(), centres.end());
-        size_t kept = 0;
-        for (size_t k = 0; k < centres.size(); k++)
-            if (kept == 0 || centres[k] - centres[kept - 1] >= kMinCentreGap * bh)
-                centres[kept++] = centres[k];
-        centres.resize(kept);
-        int head_cut = -1;
-        if (parts < 2 && centres.size() < 2) {
-            head_cut = between_heads(r, cls);
-            if (head_cut < 0) {
-                out.push_back(r);
-                whole_.push_back(1);
-                continue;
-            }
+    }
+    // Two tracks or more inside: cut between each two at the emptiest
+    // column of the middle half between their centres, even in a blob no
+    // wider than one person (people walking close together merge into one
+    // blob, and each track keeps its own part). Else, in a blob wider than
+    // one person, at the emptiest column near each equal cut; in a narrower
+    // one, between two heads on its top edge when the contour template
+    // agrees (people who came in together, whom no track told apart).
+    Vec<int> &cuts = m.columns;
+    cuts.clear();
+    cuts.push_back(r.x0);
+    if (head_cut >= 0) {
+        cuts.push_back(head_cut);
+    } else if (centres.size() >= 2) {
+        for (size_t k = 0; k + 1 < centres.size(); k++) {
+            const int mid = (centres[k] + centres[k + 1]) / 2;
+            const int span = (centres[k + 1] - centres[k]) / 4;
+            cuts.push_back(emptiest(r, mid - span, mid + span, mid));
         }
-        // The column of [lo, hi] with the least foreground, the nearest to
-        // `want` of equals.
-        auto emptiest = [&](int lo, int hi, int want) {
-            int best = want, best_n = bh + 1;
-            for (int x = lo; x <= hi; x++) {
-                const int n = m.column_count(x, r.y0, r.y1);
-                if (n < best_n || (n == best_n && std::abs(x - want) < std::abs(best - want))) {
-                    best_n = n;
-                    best = x;
-                }
-            }
-            return best;
-        };
-        // Two tracks or more inside: cut between each two at the emptiest
-        // column of the middle half between their centres, even in a blob
-        // no wider than one person (people walking close together merge
-        // into one blob, and each track keeps its own part). Else, in a
-        // blob wider than one person, at the emptiest column near each
-        // equal cut; in a narrower one, between two heads on its top edge
-        // when the contour template agrees (people who came in together,
-        // whom no track told apart).
-        Vec<int> &cuts = m.columns;
-        cuts.clear();
-        cuts.push_back(r.x0);
-        if (head_cut >= 0) {
-            cuts.push_back(head_cut);
-        } else if (centres.size() >= 2) {
-            for (size_t k = 0; k + 1 < centres.size(); k++) {
-                const int mid = (centres[k] + centres[k + 1]) / 2;
-                const int span = (centres[k + 1] - centres[k]) / 4;
-                cuts.push_back(emptiest(mid - span, mid + span, mid));
-            }
-        } else {
-            for (int k = 1; k < parts; k++) {
-                const int want = r.x0 + k * bw / parts;
-                cuts.push_back(emptiest(std::max(r.x0 + 1, want - (int)(person_w / 3)),
-                                        std::min(r.x1 - 2, want + (int)(person_w / 3)), want));
-            }
+    } else {
+        for (int k = 1; k < parts; k++) {
+            const int want = r.x0 + k * bw / parts;
+            cuts.push_back(emptiest(r, std::max(r.x0 + 1, want - (int)(person_w / 3)),
+                                    std::min(r.x1 - 2, want + (int)(person_w / 3)), want));
         }
-        cuts.push_back(r.x1);
-        for (size_t k = 0; k + 1 < cuts.size(); k++) {
-            // Each part's own vertical extent.
-            const Rect part = rows_of(r, cuts[k], cuts[k + 1]);
-            if (part.y1 > part.y0 && part.x1 > part.x0) {
-                out.push_back(part);
-                whole_.push_back(cuts.size() == 2);
-            }
+    }
+    cuts.push_back(r.x1);
+    for (size_t k = 0; k + 1 < cuts.size(); k++) {
+        // Each part's own vertical extent.
+        const Rect part = rows_of(r, cuts[k], cuts[k + 1]);
+        if (part.y1 > part.y0 && part.x1 > part.x0) {
+            out.push_back(part);
+            whole_.push_back(cuts.size() == 2);
         }
     }
 }

@@ -49,6 +49,19 @@ public:
     size_t memory_bytes() const;
 
 private:
+    // The outer regions of the cleaned mask into Impl::blobs (at most
+    // kMaxBlobs, the largest); false when the mask is flooded.
+    bool outer_blobs();
+    // Fragments of one person, one above the other, merged in Impl::blobs.
+    void merge_fragments(int scale, const PersonSize &size, Classifier &cls);
+    // Whether blob r is too small to be a person where its feet are.
+    bool speck(const Rect &r, int scale, const PersonSize &size) const;
+    // Blob r into `out`: whole, or split into the people it holds.
+    void split(const Rect &r, int scale, const Rect *predicted, int n_predicted,
+               const PersonSize &size, Classifier &cls, Vec<Rect> &out);
+    // The column of [lo, hi] with the least foreground in r's rows, the
+    // nearest to `want` of equals.
+    int emptiest(const Rect &r, int lo, int hi, int want) const;
     // The classifier's score of the cleaned mask inside r.
     float vote(Classifier &cls, const Rect &r) const;
     // The part of r between columns x0 and x1, with its own rows.

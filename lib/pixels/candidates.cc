@@ -54,23 +54,16 @@ Rect to_working(const Box &b, int s)
 
 } // namespace
 
-void PixelCandidates::clear()
-{
-    have_mask_ = false;
-    candidates_.clear();
-}
-
 void PixelCandidates::reset()
 {
     background_.reset();
-    candidates_.clear();
 }
 
 size_t PixelCandidates::memory_bytes() const
 {
     return background_.memory_bytes() + blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
-           dets_.capacity() * sizeof(ct_detection) + candidates_.capacity() * sizeof(ct_candidate);
+           dets_.capacity() * sizeof(ct_detection) + whole_.capacity();
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
@@ -110,7 +103,8 @@ static bool person_sized(const ct_candidate &c, const PersonSize &size)
 }
 
 void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
-                           int test, const PersonSize &size, uint64_t *stage_ns)
+                           int test, const PersonSize &size, Counters &counters,
+                           Vec<ct_candidate> &out)
 {
     dets_.clear();
     if (img.empty())
@@ -122,15 +116,15 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     update_background(t_us, img, tracks, size,
                       test == CT_PEDESTRIAN_SIZE ? Background::kStartScale
                                                  : Background::kMinScale);
-    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    counters.stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     const int s = background_.scale();
     blobs_.find(background_.mask(), background_.width(), background_.height(), s,
                 predicted_.data(), (int)predicted_.size(), size, classifier_, blob_rects_);
     have_mask_ = true;
-    blobs_dropped += (uint64_t)blobs_.dropped();
-    masks_flooded += blobs_.flooded();
-    stage_ns[CT_STAGE_BLOBS] += sw.lap();
-    candidates_.clear();
+    counters.blobs_dropped += (uint64_t)blobs_.dropped();
+    counters.masks_flooded += blobs_.flooded();
+    counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    out.clear();
     whole_.clear();
     for (size_t i = 0; i < blob_rects_.size(); i++) {
         const Rect &r = blob_rects_[i];
@@ -153,39 +147,39 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
         // there started one (docs/tuning.md, "A sliver at the edge").
         if ((r.x0 <= 0 || r.x1 >= background_.width()) && r.x1 - r.x0 < kEdgeMinWidth)
             c.score = 0;
-        candidates_.push_back(c);
+        out.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));
     }
-    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+    counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
 }
 
 void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                              const ct_detection *dets, size_t n, const PersonSize &size,
-                             uint64_t *stage_ns)
+                             Counters &counters, Vec<ct_candidate> &out)
 {
     Stopwatch sw;
     update_background(t_us, img, tracks, size, Background::kMinScale);
-    stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    counters.stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     classifier_.new_mask();
     blobs_.clean(background_.mask(), background_.width(), background_.height());
     have_mask_ = true;
-    stage_ns[CT_STAGE_BLOBS] += sw.lap();
+    counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
     dets_.clear();
-    candidates_.clear();
+    out.clear();
     for (size_t j = 0; j < n; j++) {
         const ct_detection &d = dets[j];
         const ct_candidate c = classifier_.candidate(
             blobs_.cleaned(), background_.width(), background_.height(),
             to_working(Box{d.left, d.top, d.width, d.height}, background_.scale()), d.left, d.top,
             d.width, d.height);
-        candidates_.push_back(c);
+        out.push_back(c);
         ct_detection v = d;
         if (rejects(c))
             v.score *= c.score;
         dets_.push_back(v);
     }
-    stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+    counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
 }
 
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/counters.h"
 #include "base/memory.h"
 
 #include "pixels/background.h"
@@ -20,29 +21,27 @@ namespace ctrack {
 
 class PixelCandidates {
 public:
-    // Forgets this step's mask and candidates (at the start of every step).
-    void clear();
-    // Blobs of the frame's foreground as candidates (candidates()) and as
+    // Forgets this step's mask (at the start of every step).
+    void clear() { have_mask_ = false; }
+    // Blobs of the frame's foreground as candidates (into `out`) and as
     // detections scored by their vote (dets()). `tracks` are the engine's,
     // predicted to this frame: confirmed tracks that have moved freeze the
     // background under them, and tracks inside a blob split it. The time
-    // of each stage goes to stage_ns.
+    // of each stage, and the blobs dropped and masks flooded, are counted.
     // `test` is a ct_pedestrian_test: what scores each candidate.
     void find(int64_t t_us, const Planes &img, const Vec<Track> &tracks, int test,
-              const PersonSize &size, uint64_t *stage_ns);
+              const PersonSize &size, Counters &counters, Vec<ct_candidate> &out);
     // The vote on the foreground inside each of the n detections: one
-    // candidate each, in order, and dets() the detections with the score of
-    // those the vote rejects multiplied by the vote's.
+    // candidate each, in order (into `out`), and dets() the detections
+    // with the score of those the vote rejects multiplied by the vote's.
     void verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                 const ct_detection *dets, size_t n, const PersonSize &size,
-                uint64_t *stage_ns);
+                Counters &counters, Vec<ct_candidate> &out);
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.
     bool whole(size_t i) const { return whole_[i] != 0; }
-    const Vec<ct_candidate> &candidates() const { return candidates_; }
-    Vec<ct_candidate> &candidates() { return candidates_; }
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale
@@ -61,8 +60,6 @@ public:
     void commit() { background_.commit(); }
     void rollback() { background_.rollback(); }
     size_t memory_bytes() const;
-    // Blobs dropped past the cap, and flooded masks, since create.
-    uint64_t blobs_dropped = 0, masks_flooded = 0;
 
 private:
     // The background model over this frame (tracks that moved are frozen).
@@ -77,7 +74,6 @@ private:
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
     Vec<char> whole_;
-    Vec<ct_candidate> candidates_;
 };
 
 } // namespace ctrack

@@ -25,43 +25,39 @@ CT_TUNABLE(kNewTrackReach, "CTRACK_NEW_TRACK_REACH", 2.0);
 
 } // namespace
 
-Engine::Engine(const ct_config &cfg) : cfg_(cfg)
+Engine::Engine(const ct_config &cfg) : cfg_(cfg), state_(cfg), saved_(cfg)
 {
     ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
     min_rho_ = (int)(cfg.mean_shift_min_similarity * kQ16);
-    size_gate_.set_gate(cfg.size_gate);
 }
 
 void Engine::rewind()
 {
-    tracks_.clear();
-    reported_.clear();
+    EngineState &s = state_;
+    s.tracks.clear();
+    s.reported.clear();
+    s.candidates.clear();
+    s.learnt.clock.rewound = s.learnt.clock.rewound || s.has_time;
+    s.has_time = false;
+    s.last_us = 0;
     pixels_.clear();
-    rewound_ = rewound_ || has_time_;
-    has_time_ = false;
-    last_us_ = 0;
 }
 
 void Engine::reset()
 {
     rewind();
+    state_.learnt = SceneModels(cfg_);
     pixels_.reset();
-    scene_.reset();
-    size_.reset(0);
-    size_gate_.reset();
-    scores_.reset();
-    scene_shift_us_ = scene_last_us_ = scene_interval_us_ = 0;
-    rewound_ = false;
 }
 
 void Engine::refine(const Planes &img)
 {
-    for (Track &t : tracks_) {
+    for (Track &t : state_.tracks) {
         if (t.state != CT_TRACK_CONFIRMED || !t.model.valid)
             continue;
         Box b = t.box();
         t.ms = ms_.track(img, t.cx.x, t.cy.x, b.width, b.height, t.model, ms_params_);
-        ms_runs_++;
+        state_.counters.mean_shift_runs++;
         if (t.ms.rho >= min_rho_)
             t.cue = Box{t.ms.cx - b.width / 2, t.ms.cy - b.height / 2, b.width, b.height};
     }
@@ -69,15 +65,15 @@ void Engine::refine(const Planes &img)
 
 void Engine::follow_or_lose(const Planes &img, int64_t t_us)
 {
-    for (size_t i = 0; i < tracks_.size(); i++) {
-        Track &t = tracks_[i];
+    for (size_t i = 0; i < state_.tracks.size(); i++) {
+        Track &t = state_.tracks[i];
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
             t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
         if (elapsed_s(t_us, t.last_update_us) > cfg_.mean_shift_max_time)
             continue;
         // Behind another person the window sees the occluder: coast instead.
-        if (occluded(tracks_, i))
+        if (occluded(state_.tracks, i))
             continue;
         if (inside_fraction(t.box(), img.width, img.height) < kMinInside)
             continue;
@@ -91,8 +87,8 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
 void Engine::learn_models(const Planes &img)
 {
     const int mu = (int)std::lround(cfg_.model_learning_rate * 256);
-    for (size_t i = 0; i < tracks_.size(); i++) {
-        Track &t = tracks_[i];
+    for (size_t i = 0; i < state_.tracks.size(); i++) {
+        Track &t = state_.tracks[i];
         if (t.state != CT_TRACK_CONFIRMED || t.det_index < 0)
             continue;
         Box b = t.box();
@@ -100,7 +96,7 @@ void Engine::learn_models(const Planes &img)
             ms_.build(img, t.cx.x, t.cy.x, b.width, b.height, &t.model);
             continue;
         }
-        if (mu == 0 || occluded(tracks_, i))
+        if (mu == 0 || occluded(state_.tracks, i))
             continue;
         ms_.learn(img, t.cx.x, t.cy.x, b.width, b.height, mu, min_rho_, &t.model);
     }
@@ -113,14 +109,14 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     // that were confirmed before this step: a tentative track's first
     // steps tell little.
     if (t.state == CT_TRACK_CONFIRMED && cfg_.source == CT_SOURCE_DETECTIONS)
-        scene_.observe(t.centre_nis(d, cfg_.detection_noise));
+        state_.learnt.motion.observe(t.centre_nis(d, cfg_.detection_noise));
     t.correct(d, cfg_.detection_noise, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
     else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&
              t.best_score >= confirm_) {
         t.state = CT_TRACK_CONFIRMED;
-        t.id = next_id_++;
+        t.id = state_.next_id++;
     }
 }
 
@@ -130,9 +126,9 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
     t.start(d, cfg_.detection_noise, index, t_us);
     if (confirm || (t.hits >= cfg_.min_hits && d.score >= confirm_)) {
         t.state = CT_TRACK_CONFIRMED;
-        t.id = next_id_++;
+        t.id = state_.next_id++;
     }
-    tracks_.push_back(t);
+    state_.tracks.push_back(t);
 }
 
 void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
@@ -150,37 +146,14 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
     gate_.index(dets, det_idx);
     pairs_.clear();
     for (int i = 0; i < n; i++) {
-        const Track &t = tracks_[(size_t)track_idx[(size_t)i]];
+        const Track &t = state_.tracks[(size_t)track_idx[(size_t)i]];
         const double reach = t.state == CT_TRACK_TENTATIVE
                                  ? kNewTrackReach * t.centre_innovation_sd(cfg_.detection_noise)
                                  : 0;
         gate_.overlapping(i, t.cue, min_iou, pairs_, reach);
     }
-    if (w > 0) {
-        // A pair alone in its row and its column is matched whatever it
-        // looks like: its cost stays under the limit (the IoU gate holds and
-        // DDIS > 0), and nothing competes for it. DDIS runs only where pairs
-        // compete.
-        row_pairs_.assign((size_t)n, 0);
-        col_pairs_.assign((size_t)m, 0);
-        for (const Pair &p : pairs_) {
-            row_pairs_[(size_t)p.row]++;
-            col_pairs_[(size_t)p.col]++;
-        }
-        size_t competing = 0;
-        for (const Pair &p : pairs_)
-            competing += row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1;
-        // A flood (a detector without non-maximum suppression) makes
-        // thousands of competing pairs, each a DDIS of some 30 us: past
-        // kMaxDdisPairs the step is associated by overlap alone, as without
-        // appearance, so that its work stays bounded.
-        if (competing <= kMaxDdisPairs)
-            for (Pair &p : pairs_)
-                if (row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1)
-                    p.cost += w * (1.0 - bank_.similarity(
-                                             tracks_[(size_t)track_idx[(size_t)p.row]],
-                                             det_idx[(size_t)p.col]));
-    }
+    if (w > 0)
+        add_appearance(track_idx, det_idx, n, m, w);
     assigner_.solve(n, m, pairs_, limit, row_to_col_);
     for (int i = 0; i < n; i++) {
         const int j = row_to_col_[(size_t)i];
@@ -188,7 +161,7 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
             continue;
         const int d = det_idx[(size_t)j];
         det_used_[(size_t)d] = 1;
-        update(tracks_[(size_t)track_idx[(size_t)i]], dets[d], d, last_us_);
+        update(state_.tracks[(size_t)track_idx[(size_t)i]], dets[d], d, state_.last_us);
         track_idx[(size_t)i] = -1;
     }
     track_idx.erase(std::remove(track_idx.begin(), track_idx.end(), -1), track_idx.end());
@@ -197,12 +170,39 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
                   det_idx.end());
 }
 
+void Engine::add_appearance(const Vec<int> &track_idx, const Vec<int> &det_idx, int n, int m,
+                            double w)
+{
+    // A pair alone in its row and its column is matched whatever it looks
+    // like: its cost stays under the limit (the IoU gate holds and DDIS >
+    // 0), and nothing competes for it. DDIS runs only where pairs compete.
+    row_pairs_.assign((size_t)n, 0);
+    col_pairs_.assign((size_t)m, 0);
+    for (const Pair &p : pairs_) {
+        row_pairs_[(size_t)p.row]++;
+        col_pairs_[(size_t)p.col]++;
+    }
+    size_t competing = 0;
+    for (const Pair &p : pairs_)
+        competing += row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1;
+    // A flood (a detector without non-maximum suppression) makes thousands
+    // of competing pairs, each a DDIS of some 30 us: past kMaxDdisPairs the
+    // step is associated by overlap alone, as without appearance, so that
+    // its work stays bounded.
+    if (competing > kMaxDdisPairs)
+        return;
+    for (Pair &p : pairs_)
+        if (row_pairs_[(size_t)p.row] > 1 || col_pairs_[(size_t)p.col] > 1)
+            p.cost += w * (1.0 - bank_.similarity(state_.tracks[(size_t)track_idx[(size_t)p.row]],
+                                                  det_idx[(size_t)p.col]));
+}
+
 void Engine::reidentify(const ct_detection *dets)
 {
     pool_tracks_.clear();
-    for (size_t i = 0; i < tracks_.size(); i++)
-        if (tracks_[i].state == CT_TRACK_LOST && tracks_[i].tmpl >= 0 &&
-            tracks_[i].last_update_us != last_us_)
+    for (size_t i = 0; i < state_.tracks.size(); i++)
+        if (state_.tracks[i].state == CT_TRACK_LOST && state_.tracks[i].tmpl >= 0 &&
+            state_.tracks[i].last_update_us != state_.last_us)
             pool_tracks_.push_back((int)i);
     const int n = (int)pool_tracks_.size(), m = (int)pool_dets_.size();
     if (n == 0 || m == 0)
@@ -211,8 +211,8 @@ void Engine::reidentify(const ct_detection *dets)
     gate_.index(dets, pool_dets_);
     pairs_.clear();
     for (int i = 0; i < n; i++) {
-        const Track &t = tracks_[(size_t)pool_tracks_[(size_t)i]];
-        const double lost_s = elapsed_s(last_us_, t.last_update_us);
+        const Track &t = state_.tracks[(size_t)pool_tracks_[(size_t)i]];
+        const double lost_s = elapsed_s(state_.last_us, t.last_update_us);
         // The size the person had when last seen: the coasted one drifts.
         const double h = std::max<double>(t.seen_h, kMinSide);
         const double reach = h * std::max(1.0, cfg_.reid_max_speed * lost_s);
@@ -227,7 +227,7 @@ void Engine::reidentify(const ct_detection *dets)
     size_t kept = 0;
     for (size_t k = 0; k < pairs_.size(); k++) {
         Pair p = pairs_[k];
-        const Track &t = tracks_[(size_t)pool_tracks_[(size_t)p.row]];
+        const Track &t = state_.tracks[(size_t)pool_tracks_[(size_t)p.row]];
         p.cost = 1.0 - bank_.similarity(t, pool_dets_[(size_t)p.col]);
         if (p.cost < limit)
             pairs_[kept++] = p;
@@ -239,7 +239,7 @@ void Engine::reidentify(const ct_detection *dets)
         if (j < 0)
             continue;
         const int d = pool_dets_[(size_t)j];
-        update(tracks_[(size_t)pool_tracks_[(size_t)i]], dets[d], d, last_us_);
+        update(state_.tracks[(size_t)pool_tracks_[(size_t)i]], dets[d], d, state_.last_us);
         det_used_[(size_t)d] = 1;
     }
     pool_dets_.erase(std::remove_if(pool_dets_.begin(), pool_dets_.end(),
@@ -256,12 +256,13 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
     const bool gate = size_gate_on();
     if (!gate && !image.known())
         return;
-    if (image.known() && size_.image_height() != image.height)
-        size_.reset(image.height);
+    PersonSize &size = state_.learnt.size;
+    if (image.known() && size.image_height() != image.height)
+        size.reset(image.height);
     constexpr double kEdge = 2;
     const float score =
         cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
-    for (const Track &t : tracks_) {
+    for (const Track &t : state_.tracks) {
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
             continue;
         const ct_detection &d = dets[t.det_index];
@@ -270,127 +271,93 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
                               d.top + d.height > image.height - kEdge))
             continue;
         if (gate)
-            size_gate_.observe(d.top, d.height);
+            state_.learnt.size_gate.observe(d.top, d.height);
         if (!image.known() || d.score < score ||
             (cfg_.source == CT_SOURCE_PIXELS && !pixels_.whole((size_t)t.det_index)))
             continue;
-        size_.observe(d.top, d.height, d.width);
+        size.observe(d.top, d.height, d.width);
     }
     if (image.known())
-        size_.learn();
+        size.learn();
 }
 
 void Engine::recover(const ct_detection *dets)
 {
     for (int i : pool_tracks_)
-        tracks_[(size_t)i].cue = tracks_[(size_t)i].seen;
+        state_.tracks[(size_t)i].cue = state_.tracks[(size_t)i].seen;
     match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
     for (int i : pool_tracks_)
-        tracks_[(size_t)i].cue = tracks_[(size_t)i].box();
+        state_.tracks[(size_t)i].cue = state_.tracks[(size_t)i].box();
 }
 
 bool Engine::hidden_in_view(const Track &t, size_t i) const
 {
     const double limit = cfg_.report_lost_sd;
     return std::sqrt(t.cx.p00) <= limit * t.w.x && std::sqrt(t.cy.p00) <= limit * t.h.x &&
-           occluded(tracks_, i);
+           occluded(state_.tracks, i);
 }
 
 void Engine::step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
                   size_t n)
 {
-    saved_tracks_ = tracks_;
-    saved_reported_ = reported_;
-    saved_candidates_ = pixels_.candidates();
-    const uint64_t next_id = next_id_;
-    const SceneMotion scene = scene_;
-    const SizeGate size_gate = size_gate_;
-    const ScoreScale scores = scores_;
-    saved_size_ = size_;
-    const int64_t last_us = last_us_;
-    const bool has_time = has_time_;
-    const int64_t scene_clock[3] = {scene_shift_us_, scene_last_us_, scene_interval_us_};
-    const bool rewound = rewound_;
-    const uint64_t runs[5] = {ms_runs_, bank_.ddis_runs, bank_.builds, pixels_.blobs_dropped,
-                              pixels_.masks_flooded};
-    uint64_t stage_ns[CT_STATS_MAX_STAGES];
-    std::copy(stage_ns_, stage_ns_ + CT_STATS_MAX_STAGES, stage_ns);
+    saved_ = state_;
     pixels_.commit(); // the last step's update stands
     try {
         step_unguarded(t_us, img, image, dets, n);
     } catch (...) {
         // Appearance templates need nothing here: TemplateBank::learn()
         // builds in slots that the restored tracks do not point to.
-        tracks_ = saved_tracks_;
-        reported_ = saved_reported_;
-        pixels_.candidates() = saved_candidates_;
+        state_ = saved_;
         pixels_.rollback();
-        next_id_ = next_id;
-        scene_ = scene;
-        size_gate_ = size_gate;
-        scores_ = scores;
-        size_ = saved_size_;
-        last_us_ = last_us;
-        has_time_ = has_time;
-        scene_shift_us_ = scene_clock[0];
-        scene_last_us_ = scene_clock[1];
-        scene_interval_us_ = scene_clock[2];
-        rewound_ = rewound;
-        ms_runs_ = runs[0];
-        bank_.ddis_runs = runs[1];
-        bank_.builds = runs[2];
-        pixels_.blobs_dropped = runs[3];
-        pixels_.masks_flooded = runs[4];
-        std::copy(stage_ns, stage_ns + CT_STATS_MAX_STAGES, stage_ns_);
         throw;
     }
 }
 
-void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
-                            const ct_detection *dets, size_t n)
+Engine::StepTime Engine::advance_clock(int64_t t_us)
 {
-    const bool pixels = cfg_.mean_shift && !img.empty();
-    appearance_ = cfg_.appearance && !img.empty();
-    const bool first = !has_time_;
-    const double dt = first ? 0.0 : elapsed_s(t_us, last_us_);
-    last_us_ = t_us;
-    has_time_ = true;
+    StepTime time;
+    time.first = !state_.has_time;
+    time.dt = time.first ? 0.0 : elapsed_s(t_us, state_.last_us);
+    state_.last_us = t_us;
+    state_.has_time = true;
     // The scene's clock: after rewind(), one frame interval (40 ms when
     // none is known) after its last step, whatever the host's timestamp.
-    if (first && rewound_)
-        scene_shift_us_ = (int64_t)((uint64_t)scene_last_us_ +
-                                    (uint64_t)(scene_interval_us_ > 0 ? scene_interval_us_
-                                                                      : 40000) -
-                                    (uint64_t)t_us);
-    rewound_ = false;
-    const int64_t scene_us = (int64_t)((uint64_t)t_us + (uint64_t)scene_shift_us_);
-    if (!first)
-        scene_interval_us_ = (int64_t)elapsed_us(scene_us, scene_last_us_);
-    scene_last_us_ = scene_us;
+    SceneClock &c = state_.learnt.clock;
+    if (time.first && c.rewound)
+        c.shift_us = (int64_t)((uint64_t)c.last_us +
+                               (uint64_t)(c.interval_us > 0 ? c.interval_us : 40000) -
+                               (uint64_t)t_us);
+    c.rewound = false;
+    time.scene_us = (int64_t)((uint64_t)t_us + (uint64_t)c.shift_us);
+    if (!time.first)
+        c.interval_us = (int64_t)elapsed_us(time.scene_us, c.last_us);
+    c.last_us = time.scene_us;
+    return time;
+}
 
-    Stopwatch sw;
-    const double motion_noise = cfg_.motion_noise * std::sqrt(scene_.scale());
-    for (Track &t : tracks_)
-        t.predict(dt, motion_noise);
-    stage_ns_[CT_STAGE_PREDICT] += sw.lap();
+bool Engine::find_candidates(int64_t scene_us, const Planes &img, const ct_detection **dets,
+                             size_t *n)
+{
     pixels_.clear();
     if (cfg_.source == CT_SOURCE_PIXELS) {
-        pixels_.find(scene_us, img, tracks_, cfg_.pedestrian_test, size_, stage_ns_);
-        dets = pixels_.dets().data();
-        n = pixels_.dets().size();
-        sw.lap();
-    } else if (cfg_.verify_detections && !img.empty()) {
-        pixels_.verify(scene_us, img, tracks_, dets, n, size_, stage_ns_);
-        dets = pixels_.dets().data();
-        sw.lap();
+        pixels_.find(scene_us, img, state_.tracks, cfg_.pedestrian_test, state_.learnt.size,
+                     state_.counters, state_.candidates);
+        *dets = pixels_.dets().data();
+        *n = pixels_.dets().size();
+        return true;
     }
-    if (pixels) {
-        refine(img);
-        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    state_.candidates.clear();
+    if (cfg_.verify_detections && !img.empty()) {
+        pixels_.verify(scene_us, img, state_.tracks, *dets, *n, state_.learnt.size,
+                       state_.counters, state_.candidates);
+        *dets = pixels_.dets().data();
+        return true;
     }
-    if (appearance_)
-        bank_.begin(img, dets, n);
+    return false;
+}
 
+void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
+{
     det_used_.assign(n, 0);
     pool_dets_.clear();
     low_dets_.clear();
@@ -399,33 +366,39 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     // A detector's boxes far off the height its people have where they
     // stand are ignored (size_gate; the pixels' candidates have their own
     // size test).
+    SceneModels &learnt = state_.learnt;
     const bool gate = size_gate_on();
     if (gate)
-        size_gate_.age(dt);
+        learnt.size_gate.age(dt);
     // The detector's scale of scores, learnt from the boxes that may start
     // a track, bounds the score that confirms one (score_scale.h).
     if (cfg_.source == CT_SOURCE_DETECTIONS) {
         for (size_t j = 0; j < n; j++)
             if (dets[j].score >= cfg_.start_score)
-                scores_.observe(dets[j].score);
-        confirm_ = scores_.confirm(cfg_.confirm_score);
+                learnt.scores.observe(dets[j].score);
+        confirm_ = learnt.scores.confirm(cfg_.confirm_score);
     }
     for (size_t j = 0; j < n; j++) {
-        if (gate && !size_gate_.admits(dets[j]))
+        if (gate && !learnt.size_gate.admits(dets[j]))
             continue;
         if (dets[j].score >= high)
             pool_dets_.push_back((int)j);
         else if (dets[j].score >= cfg_.low_score)
             low_dets_.push_back((int)j);
     }
+}
 
+void Engine::associate(const ct_detection *dets, bool pixels)
+{
+    const Vec<Track> &tracks = state_.tracks;
+    const int64_t t_us = state_.last_us;
     // 1. High-score detections against confirmed and lost tracks (those
     //    lost for longer than lost_lifetime are gone, whatever lies where
     //    they were).
     pool_tracks_.clear();
-    for (size_t i = 0; i < tracks_.size(); i++)
-        if (tracks_[i].state != CT_TRACK_TENTATIVE &&
-            elapsed_s(t_us, tracks_[i].last_update_us) <= cfg_.lost_lifetime)
+    for (size_t i = 0; i < tracks.size(); i++)
+        if (tracks[i].state != CT_TRACK_TENTATIVE &&
+            elapsed_s(t_us, tracks[i].last_update_us) <= cfg_.lost_lifetime)
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
     // 1b. Without mean shift to follow them, the tracks left try again
@@ -436,19 +409,17 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
 
     // 2. Low-score detections continue tracks that were confirmed and not
     //    yet lost: a weak detection near where a person is expected.
-    {
-        size_t k = 0;
-        for (int i : pool_tracks_)
-            if (tracks_[i].state == CT_TRACK_CONFIRMED)
-                pool_tracks_[k++] = i;
-        pool_tracks_.resize(k);
-    }
+    size_t k = 0;
+    for (int i : pool_tracks_)
+        if (tracks[(size_t)i].state == CT_TRACK_CONFIRMED)
+            pool_tracks_[k++] = i;
+    pool_tracks_.resize(k);
     match(pool_tracks_, low_dets_, dets, cfg_.low_match_iou);
 
     // 3. Tentative tracks against the high-score detections left.
     pool_tracks_.clear();
-    for (size_t i = 0; i < tracks_.size(); i++)
-        if (tracks_[i].state == CT_TRACK_TENTATIVE)
+    for (size_t i = 0; i < tracks.size(); i++)
+        if (tracks[i].state == CT_TRACK_TENTATIVE)
             pool_tracks_.push_back((int)i);
     match(pool_tracks_, pool_dets_, dets, cfg_.tentative_match_iou);
 
@@ -456,15 +427,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     //    appearance.
     if (appearance_)
         reidentify(dets);
-    stage_ns_[CT_STAGE_ASSOCIATE] += sw.lap();
-    if (pixels) {
-        follow_or_lose(img, t_us);
-        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
-    }
+}
 
-    scene_.learn(dt);
-    learn_sizes(dets, t_us, image);
-    age_unmatched(t_us, image);
+void Engine::start_tracks(const ct_detection *dets, int64_t t_us, bool first)
+{
     // New tracks from the high-score detections nobody claimed that reach
     // start_score (a detector's boxes only: the pixels' candidates start
     // at candidate_min_score). A tentative track is confirmed after
@@ -473,35 +439,70 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     // is no earlier frame to wait for. Not the pixels' candidates: a
     // background model learns its first frame and finds none there, and
     // one primed on the recording (ct_tracker_prime()) finds fragments and
-    // groups as in any frame (TUD-Campus with its median learnt first:
-    // 43.7 / 54.5 confirmed at once, 51.0 / 69.3 not).
+    // groups as in any frame (docs/tuning.md, "A recording's start").
     const bool confirm_now = first && cfg_.source == CT_SOURCE_DETECTIONS;
     const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : cfg_.start_score;
     for (int j : pool_dets_) {
-        if ((int)tracks_.size() >= cfg_.max_tracks)
+        if ((int)state_.tracks.size() >= cfg_.max_tracks)
             break;
         if (dets[j].score >= start)
             start_track(dets[j], j, t_us, confirm_now);
     }
-    stage_ns_[CT_STAGE_LIFECYCLE] += sw.lap();
+}
+
+void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
+                            const ct_detection *dets, size_t n)
+{
+    const bool pixels = cfg_.mean_shift && !img.empty();
+    appearance_ = cfg_.appearance && !img.empty();
+    const StepTime time = advance_clock(t_us);
+    uint64_t *const ns = state_.counters.stage_ns;
+
+    Stopwatch sw;
+    const double motion_noise = cfg_.motion_noise * std::sqrt(state_.learnt.motion.scale());
+    for (Track &t : state_.tracks)
+        t.predict(time.dt, motion_noise);
+    ns[CT_STAGE_PREDICT] += sw.lap();
+    if (find_candidates(time.scene_us, img, &dets, &n))
+        sw.lap(); // its stages counted themselves
+    if (pixels) {
+        refine(img);
+        ns[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+    if (appearance_)
+        bank_.begin(img, dets, n, &state_.counters);
+
+    sort_detections(time.dt, dets, n);
+    associate(dets, pixels);
+    ns[CT_STAGE_ASSOCIATE] += sw.lap();
+    if (pixels) {
+        follow_or_lose(img, t_us);
+        ns[CT_STAGE_MEAN_SHIFT] += sw.lap();
+    }
+
+    state_.learnt.motion.learn(time.dt);
+    learn_sizes(dets, t_us, image);
+    age_unmatched(t_us, image);
+    start_tracks(dets, t_us, time.first);
+    ns[CT_STAGE_LIFECYCLE] += sw.lap();
     if (pixels) {
         learn_models(img);
-        stage_ns_[CT_STAGE_MEAN_SHIFT] += sw.lap();
+        ns[CT_STAGE_MEAN_SHIFT] += sw.lap();
     }
     if (appearance_) {
-        bank_.learn(tracks_, saved_tracks_, t_us);
-        stage_ns_[CT_STAGE_APPEARANCE] += sw.lap();
+        bank_.learn(state_.tracks, saved_.tracks, t_us);
+        ns[CT_STAGE_APPEARANCE] += sw.lap();
     }
 
     report(t_us, image);
-    stage_ns_[CT_STAGE_REPORT] += sw.lap();
+    ns[CT_STAGE_REPORT] += sw.lap();
 }
 
 void Engine::age_unmatched(int64_t t_us, ImageSize image)
 {
     size_t k = 0;
-    for (size_t i = 0; i < tracks_.size(); i++) {
-        Track &t = tracks_[i];
+    for (size_t i = 0; i < state_.tracks.size(); i++) {
+        Track &t = state_.tracks[i];
         bool keep = true;
         if (t.last_update_us != t_us && !t.followed) {
             if (t.state == CT_TRACK_TENTATIVE) {
@@ -519,55 +520,68 @@ void Engine::age_unmatched(int64_t t_us, ImageSize image)
         }
         if (keep) {
             if (k != i) // a track is some 2 KiB (its colour model): move only the ones that move
-                tracks_[k] = t;
+                state_.tracks[k] = t;
             k++;
         }
     }
-    tracks_.resize(k);
+    state_.tracks.resize(k);
 }
 
 size_t Engine::memory_bytes() const
 {
-    return sizeof(*this) + (tracks_.capacity() + saved_tracks_.capacity()) * sizeof(Track) +
-           (reported_.capacity() + saved_reported_.capacity()) * sizeof(ct_track) +
-           saved_candidates_.capacity() * sizeof(ct_candidate) +
-           pairs_.capacity() * sizeof(Pair) + gate_.memory_bytes() +
+    const EngineState *const both[] = {&state_, &saved_};
+    size_t state = 0;
+    for (const EngineState *e : both)
+        state += e->tracks.capacity() * sizeof(Track) +
+                 e->reported.capacity() * sizeof(ct_track) +
+                 e->candidates.capacity() * sizeof(ct_candidate);
+    return sizeof(*this) + state + pairs_.capacity() * sizeof(Pair) + gate_.memory_bytes() +
            (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
-            low_dets_.capacity()) * sizeof(int) +
+            low_dets_.capacity() + row_pairs_.capacity() + col_pairs_.capacity()) *
+               sizeof(int) +
            det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +
            bank_.memory_bytes() + pixels_.memory_bytes();
 }
 
+bool Engine::reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const
+{
+    Box b = t.box();
+    if (t.last_update_us == t_us && !t.followed) {
+        // Where the scene moves less predictably than the filter assumes,
+        // its estimate lags: the box goes toward the detection.
+        const double f = state_.learnt.motion.follow();
+        b.left += f * (t.seen.left - b.left);
+        b.top += f * (t.seen.top - b.top);
+        b.width += f * (t.seen.width - b.width);
+        b.height += f * (t.seen.height - b.height);
+    }
+    if (cfg_.clip_boxes && image.known()) {
+        double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
+        double x1 = std::min<double>(image.width, b.left + b.width);
+        double y1 = std::min<double>(image.height, b.top + b.height);
+        if (x1 <= x0 || y1 <= y0)
+            return false;
+        b = Box{x0, y0, x1 - x0, y1 - y0};
+    }
+    *out = b;
+    return true;
+}
+
 void Engine::report(int64_t t_us, ImageSize image)
 {
-    reported_.clear();
-    for (const Track &t : tracks_) {
+    state_.reported.clear();
+    for (const Track &t : state_.tracks) {
         if (t.state == CT_TRACK_TENTATIVE)
             continue;
         double since = elapsed_s(t_us, t.last_update_us);
         if (t.state == CT_TRACK_LOST && since > cfg_.report_lost_time)
             continue;
         if (t.state == CT_TRACK_LOST && cfg_.report_lost_sd > 0 &&
-            !hidden_in_view(t, (size_t)(&t - tracks_.data())))
+            !hidden_in_view(t, (size_t)(&t - state_.tracks.data())))
             continue;
-        Box b = t.box();
-        if (t.last_update_us == t_us && !t.followed) {
-            // Where the scene moves less predictably than the filter
-            // assumes, its estimate lags: the box goes toward the detection.
-            const double f = scene_.follow();
-            b.left += f * (t.seen.left - b.left);
-            b.top += f * (t.seen.top - b.top);
-            b.width += f * (t.seen.width - b.width);
-            b.height += f * (t.seen.height - b.height);
-        }
-        if (cfg_.clip_boxes && image.known()) {
-            double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
-            double x1 = std::min<double>(image.width, b.left + b.width);
-            double y1 = std::min<double>(image.height, b.top + b.height);
-            if (x1 <= x0 || y1 <= y0)
-                continue;
-            b = Box{x0, y0, x1 - x0, y1 - y0};
-        }
+        Box b;
+        if (!reported_box(t, t_us, image, &b))
+            continue;
         ct_track o = {};
         o.id = t.id;
         o.left = (float)b.left;
@@ -589,9 +603,9 @@ void Engine::report(int64_t t_us, ImageSize image)
         o.time_since_update = since;
         o.detection_index = t.det_index;
         o.class_id = t.class_id;
-        reported_.push_back(o);
+        state_.reported.push_back(o);
     }
-    std::sort(reported_.begin(), reported_.end(),
+    std::sort(state_.reported.begin(), state_.reported.end(),
               [](const ct_track &a, const ct_track &b) { return a.id < b.id; });
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/counters.h"
 #include "base/memory.h"
 
 #include "ctrack/ctrack.h"
@@ -28,6 +29,42 @@ namespace ctrack {
 // (about 30 ms); a flood past it is matched by overlap alone.
 constexpr size_t kMaxDdisPairs = 1024;
 
+// The clock the scene's models run on (the background's): the host's
+// timestamps plus `shift`, which Engine::rewind() sets so that the clock goes
+// on one frame interval after the last step before it.
+struct SceneClock {
+    int64_t shift_us = 0, last_us = 0, interval_us = 0;
+    bool rewound = false; // rewind() was called since the last step
+};
+
+// What the tracker learns of the scene as it runs: rewind() keeps it,
+// reset() forgets it. (The background model is the pixels', which commit
+// and roll back their own update.)
+struct SceneModels {
+    explicit SceneModels(const ct_config &cfg) { size_gate.set_gate(cfg.size_gate); }
+    SceneMotion motion;
+    PersonSize size;
+    SizeGate size_gate; // a detector's people's height (size_gate)
+    ScoreScale scores;  // a detector's scale of scores (confirm_score)
+    SceneClock clock;
+};
+
+// Everything a step changes but the background model, in one value: a
+// failed step puts the whole of it back.
+struct EngineState {
+    explicit EngineState(const ct_config &cfg) : learnt(cfg) {}
+    // What rewind() forgets: the tracks, this step's outputs and the time.
+    Vec<Track> tracks;
+    Vec<ct_track> reported;
+    Vec<ct_candidate> candidates;
+    int64_t last_us = 0;
+    bool has_time = false;
+    // What it keeps.
+    uint64_t next_id = 1;
+    SceneModels learnt;
+    Counters counters;
+};
+
 class Engine {
 public:
     explicit Engine(const ct_config &cfg);
@@ -37,32 +74,27 @@ public:
     // the call.
     void step(int64_t t_us, const Planes &img, ImageSize image, const ct_detection *dets,
               size_t n);
+    // Forgets what a rewind() forgets, and what was learnt of the scene
+    // (SceneModels and the background model); ids keep increasing.
     void reset();
-    // Forgets the tracks and the last timestamp, as reset(), but keeps what
-    // was learnt of the scene: the background model with its noise,
-    // contrast and exposure, the people's size, the scene's motion, the
-    // size gate and the detector's scale of scores. The next step may go
-    // back in time (a recording played again): the background's own clock
-    // goes on from where it was.
+    // Forgets the tracks, this step's outputs and the last timestamp
+    // (EngineState's first part), but keeps what was learnt of the scene:
+    // SceneModels and the background model with its noise, contrast and
+    // exposure. The next step may go back in time (a recording played
+    // again): the scene's clock goes on from where it was.
     void rewind();
     // The id the next confirmed track takes; set_next_id() puts back one
     // taken before (a priming's steps confirm no track a host saw).
-    uint64_t next_id() const { return next_id_; }
-    void set_next_id(uint64_t id) { next_id_ = id; }
+    uint64_t next_id() const { return state_.next_id; }
+    void set_next_id(uint64_t id) { state_.next_id = id; }
 
-    const Vec<ct_track> &reported() const { return reported_; }
-    const Vec<ct_candidate> &candidates() const { return pixels_.candidates(); }
-    size_t live_tracks() const { return tracks_.size(); }
-    uint64_t mean_shift_runs() const { return ms_runs_; }
-    uint64_t ddis_runs() const { return bank_.ddis_runs; }
-    uint64_t template_builds() const { return bank_.builds; }
-    uint64_t blobs_dropped() const { return pixels_.blobs_dropped; }
-    uint64_t masks_flooded() const { return pixels_.masks_flooded; }
-    const PersonSize &person_size() const { return size_; }
+    const Vec<ct_track> &reported() const { return state_.reported; }
+    const Vec<ct_candidate> &candidates() const { return state_.candidates; }
+    size_t live_tracks() const { return state_.tracks.size(); }
+    const Counters &counters() const { return state_.counters; }
+    const PersonSize &person_size() const { return state_.learnt.size; }
     size_t memory_bytes() const;
-    // Nanoseconds spent in each ct_stage, summed over the steps.
-    const uint64_t *stage_ns() const { return stage_ns_; }
-    bool has_time() const { return has_time_; }
+    bool has_time() const { return state_.has_time; }
     // This step's cleaned foreground mask at the background model's scale
     // (working_scale() frame pixels a working pixel), or null when the
     // step had no pixels.
@@ -70,11 +102,36 @@ public:
     // The pixels' working scale (1, 2 or 4), 0 until the background model
     // has learnt a frame (since the last reset).
     int working_scale() const { return pixels_.started() ? pixels_.scale() : 0; }
-    int64_t last_time() const { return last_us_; }
+    int64_t last_time() const { return state_.last_us; }
 
 private:
+    // This step's time: seconds since the last step (0 at the first after
+    // create, reset or rewind) and the scene's clock.
+    struct StepTime {
+        bool first;
+        double dt;
+        int64_t scene_us;
+    };
+
     void step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
                         const ct_detection *dets, size_t n);
+    // The engine's clocks moved to this step's timestamp.
+    StepTime advance_clock(int64_t t_us);
+    // This step's candidates from the pixels, when the tracker reads them:
+    // the blobs (source CT_SOURCE_PIXELS), or the host's detections with
+    // the contour template's vote (verify_detections). *dets and *n then
+    // point at them.
+    bool find_candidates(int64_t scene_us, const Planes &img, const ct_detection **dets,
+                         size_t *n);
+    // The detections that may be matched, by pass: the high-score ones in
+    // pool_dets_, the low-score ones in low_dets_ (those the size gate
+    // sets aside in neither); the detector's scale of scores learnt.
+    void sort_detections(double dt, const ct_detection *dets, size_t n);
+    // The passes of association (high scores, recovery, low scores,
+    // tentative tracks, re-identification).
+    void associate(const ct_detection *dets, bool pixels);
+    // New tracks from the high-score detections nobody claimed.
+    void start_tracks(const ct_detection *dets, int64_t t_us, bool first);
     // Mean shift from each confirmed track's prediction: where the pixels
     // say the person is, before the detections are compared.
     void refine(const Planes &img);
@@ -89,11 +146,15 @@ private:
     // that look like them (DDIS), near where they were heading: a person
     // who reappears after an occlusion keeps their id.
     void reidentify(const ct_detection *dets);
-    // Matches tracks_[track_idx] to dets[det_idx] by IoU with the gate
+    // Matches tracks[track_idx] to dets[det_idx] by IoU with the gate
     // min_iou (and appearance, when on), updates the matched tracks, and
     // leaves only the unmatched in both lists.
     void match(Vec<int> &track_idx, Vec<int> &det_idx,
                const ct_detection *dets, double min_iou);
+    // The costs of match()'s pairs: 1 - IoU, plus appearance_weight (1 -
+    // DDIS) where pairs compete.
+    void add_appearance(const Vec<int> &track_idx, const Vec<int> &det_idx, int n, int m,
+                        double weight);
     void update(Track &t, const ct_detection &d, int index, int64_t t_us);
     void start_track(const ct_detection &d, int index, int64_t t_us, bool confirm);
     // Whether a detector's boxes go through the size gate (size_gate).
@@ -115,38 +176,22 @@ private:
     // report_lost_sd of its size.
     bool hidden_in_view(const Track &t, size_t i) const;
     void report(int64_t t_us, ImageSize image);
+    // A track's reported box: its estimate, drawn toward its detection
+    // where the scene moves less predictably than the filter assumes, and
+    // clipped to the image when asked; false when clipping leaves nothing.
+    bool reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const;
 
-    uint64_t stage_ns_[CT_STATS_MAX_STAGES] = {};
-    uint64_t ms_runs_ = 0;
-    ct_config cfg_;
-    Vec<Track> tracks_;
-    Vec<ct_track> reported_;
-    uint64_t next_id_ = 1;
-    int64_t last_us_ = 0;
-    bool has_time_ = false;
-    // The scene's clock (the background model's): the host's timestamps
-    // plus scene_shift_us_, which rewind() sets so that the clock goes on
-    // one frame interval after the last step before it.
-    int64_t scene_shift_us_ = 0;
-    int64_t scene_last_us_ = 0;
-    int64_t scene_interval_us_ = 0;
-    bool rewound_ = false;
-
-    // The state before the step in progress, restored if it throws (the
-    // restoring copy fits in capacity the vectors already have, so it cannot
-    // throw). Kept as members so that steady state does not allocate.
-    Vec<Track> saved_tracks_;
-    Vec<ct_track> saved_reported_;
-    Vec<ct_candidate> saved_candidates_;
-    PersonSize saved_size_;
+    const ct_config cfg_;
+    EngineState state_;
+    // The state before the step in progress, restored as a whole if it
+    // throws (the restoring copy fits in capacity the vectors already
+    // have, so it cannot throw). A member, so that steady state does not
+    // allocate.
+    EngineState saved_;
 
     MeanShift ms_;
     MeanShiftParams ms_params_;
     int min_rho_ = 0;         // mean_shift_min_similarity in Q16
-    SceneMotion scene_;
-    PersonSize size_;
-    SizeGate size_gate_; // a detector's people's height (size_gate)
-    ScoreScale scores_;  // a detector's scale of scores (confirm_score)
     // The score one of a tentative track's detections must reach before it
     // is confirmed, this step: with a detector's boxes confirm_score, or
     // less where the detector's scores are lower (score_scale.h); 0 (none)

@@ -23,10 +23,10 @@ static int by_frame(const void *a, const void *b)
 
 /* Parses the comma-separated numbers of one line into v (at most max).
  * Returns how many, or -1 when a field is not a number. */
-static int parse_fields(char *line, double *v, int max)
+static int parse_fields(const char *line, double *v, int max)
 {
     int n = 0;
-    char *p = line;
+    const char *p = line;
     for (;;) {
         while (*p == ' ' || *p == '\t')
             p++;
@@ -49,6 +49,74 @@ static int parse_fields(char *line, double *v, int max)
     }
 }
 
+/* Parses one line of a detections file (its end of line stripped): 1 and
+ * the detection in *frame and *det, 0 for a blank or comment line, -1 with
+ * "FILE:LINE: what" in err. */
+static int parse_line(const char *line, size_t len, const char *path, size_t lineno,
+                      int *frame, ct_detection *det, char *err, size_t err_len)
+{
+    if (memchr(line, '\0', len)) {
+        snprintf(err, err_len, "%s:%zu: a NUL byte in the line (is it a text file?)", path,
+                 lineno);
+        return -1;
+    }
+    size_t lead = strspn(line, " \t");
+    if (line[lead] == '\0' || line[lead] == '#')
+        return 0;
+    double v[10];
+    int n = parse_fields(line, v, 10);
+    if (n < 7) {
+        snprintf(err, err_len,
+                 "%s:%zu: malformed detection line (want frame,id,left,top,width,height,"
+                 "score,...): '%.60s'",
+                 path, lineno, line);
+        return -1;
+    }
+    if (!(v[0] >= 1 && v[0] <= DETFILE_MAX_FRAME) || v[0] != floor(v[0])) {
+        snprintf(err, err_len, "%s:%zu: frame %.10g is not a whole number in [1, %d]", path,
+                 lineno, v[0], DETFILE_MAX_FRAME);
+        return -1;
+    }
+    /* The box and score as the tracker takes them: 32-bit floats. */
+    const float box[5] = {(float)v[2], (float)v[3], (float)v[4], (float)v[5], (float)v[6]};
+    for (int k = 0; k < 5; k++)
+        if (!isfinite(box[k]) || fabsf(box[k]) > 1e6f) {
+            snprintf(err, err_len, "%s:%zu: field %d (%g) is not a finite number within +-1e6",
+                     path, lineno, k + 3, v[k + 2]);
+            return -1;
+        }
+    if (!(box[2] > 0) || !(box[3] > 0)) {
+        snprintf(err, err_len, "%s:%zu: box size %gx%g is not positive (as a 32-bit float)",
+                 path, lineno, v[4], v[5]);
+        return -1;
+    }
+    *frame = (int)v[0];
+    *det = (ct_detection){box[0], box[1], box[2], box[3], box[4], 0};
+    return 1;
+}
+
+/* The entries sorted by frame (file order within a frame) into out. */
+static int fill(det_file *out, entry *list, size_t count, const char *path, char *err,
+                size_t err_len)
+{
+    if (count) /* qsort's pointer must not be NULL, even for no elements */
+        qsort(list, count, sizeof *list, by_frame);
+    out->dets = malloc((count ? count : 1) * sizeof *out->dets);
+    out->frames = malloc((count ? count : 1) * sizeof *out->frames);
+    if (!out->dets || !out->frames) {
+        snprintf(err, err_len, "out of memory reading '%s'", path);
+        detfile_free(out);
+        return -1;
+    }
+    for (size_t i = 0; i < count; i++) {
+        out->dets[i] = list[i].det;
+        out->frames[i] = list[i].frame;
+    }
+    out->count = count;
+    out->max_frame = count ? list[count - 1].frame : 0;
+    return 0;
+}
+
 int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
 {
     memset(out, 0, sizeof *out);
@@ -67,42 +135,13 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
         lineno++;
         while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
             line[--len] = '\0';
-        if (memchr(line, '\0', (size_t)len)) {
-            snprintf(err, err_len, "%s:%zu: a NUL byte in the line (is it a text file?)",
-                     path, lineno);
+        int frame;
+        ct_detection det;
+        const int got = parse_line(line, (size_t)len, path, lineno, &frame, &det, err, err_len);
+        if (got < 0)
             goto out;
-        }
-        size_t lead = strspn(line, " \t");
-        if (line[lead] == '\0' || line[lead] == '#')
+        if (got == 0)
             continue;
-        double v[10];
-        int n = parse_fields(line, v, 10);
-        if (n < 7) {
-            snprintf(err, err_len,
-                     "%s:%zu: malformed detection line (want frame,id,left,top,width,height,"
-                     "score,...): '%.60s'",
-                     path, lineno, line);
-            goto out;
-        }
-        if (!(v[0] >= 1 && v[0] <= DETFILE_MAX_FRAME) || v[0] != floor(v[0])) {
-            snprintf(err, err_len, "%s:%zu: frame %.10g is not a whole number in [1, %d]", path,
-                     lineno, v[0], DETFILE_MAX_FRAME);
-            goto out;
-        }
-        /* The box and score as the tracker takes them: 32-bit floats. */
-        const float box[5] = {(float)v[2], (float)v[3], (float)v[4], (float)v[5], (float)v[6]};
-        for (int k = 0; k < 5; k++)
-            if (!isfinite(box[k]) || fabsf(box[k]) > 1e6f) {
-                snprintf(err, err_len, "%s:%zu: field %d (%g) is not a finite number within "
-                                       "+-1e6",
-                         path, lineno, k + 3, v[k + 2]);
-                goto out;
-            }
-        if (!(box[2] > 0) || !(box[3] > 0)) {
-            snprintf(err, err_len, "%s:%zu: box size %gx%g is not positive (as a 32-bit float)",
-                     path, lineno, v[4], v[5]);
-            goto out;
-        }
         if (count == cap) {
             size_t ncap = cap ? cap * 2 : 1024;
             entry *nl = realloc(list, ncap * sizeof *nl);
@@ -113,37 +152,14 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
             list = nl;
             cap = ncap;
         }
-        entry *e = &list[count];
-        e->frame = (int)v[0];
-        e->order = count;
-        e->det.left = box[0];
-        e->det.top = box[1];
-        e->det.width = box[2];
-        e->det.height = box[3];
-        e->det.score = box[4];
-        e->det.class_id = 0;
+        list[count] = (entry){frame, count, det};
         count++;
     }
     if (ferror(f)) {
         snprintf(err, err_len, "cannot read detections '%s': %s", path, strerror(errno));
         goto out;
     }
-    if (count) /* qsort's pointer must not be NULL, even for no elements */
-        qsort(list, count, sizeof *list, by_frame);
-    out->dets = malloc((count ? count : 1) * sizeof *out->dets);
-    out->frames = malloc((count ? count : 1) * sizeof *out->frames);
-    if (!out->dets || !out->frames) {
-        snprintf(err, err_len, "out of memory reading '%s'", path);
-        detfile_free(out);
-        goto out;
-    }
-    for (size_t i = 0; i < count; i++) {
-        out->dets[i] = list[i].det;
-        out->frames[i] = list[i].frame;
-    }
-    out->count = count;
-    out->max_frame = count ? list[count - 1].frame : 0;
-    rc = 0;
+    rc = fill(out, list, count, path, err, err_len);
 out:
     free(line);
     free(list);
