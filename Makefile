@@ -97,7 +97,7 @@ eval: all
 	"$$(scripts/venv.sh eval)" eval/eval.py $(BUILD)
 
 bench: all
-	"$$(scripts/venv.sh eval)" bench/bench.py $(BUILD)
+	PYTHONPATH=python "$$(scripts/venv.sh eval)" bench/bench.py $(BUILD)
 
 # One tracker for a million frames of detections and 100,000 frames of
 # pixels: memory and time per frame at the start, middle and end; fails if

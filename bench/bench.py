@@ -162,8 +162,7 @@ def colour_conversion_us(y4m, frames):
     """OpenCV's and numpy's BGR to I420 on the first frames of y4m, us a
     frame (the frames made BGR by OpenCV first, not counted)."""
     import cv2
-    sys.path.insert(0, os.path.join(TOP, "python"))
-    from ctrack import bgr_to_i420
+    from ctrack import bgr_to_i420  # the binding in python/ (make bench's PYTHONPATH)
     cv2.setNumThreads(1)
     w, h, _, rows = open_y4m(y4m)
     bgr = [cv2.cvtColor(np.asarray(rows[k]).reshape(h * 3 // 2, w), cv2.COLOR_YUV2BGR_I420)

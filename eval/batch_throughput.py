@@ -3,7 +3,11 @@
 frames per second over a batch of recordings, with 1 and 2 workers, on a
 process pool and on a local Ray.
 
-    batch_throughput.py BUILD_DIR [--inputs N] [--repeats R] [--png PATH]
+    PYTHONPATH=python .venv-eval/bin/python eval/batch_throughput.py BUILD_DIR \
+        [--inputs N] [--repeats R] [--png PATH]
+
+(the binding in python/ on the path, as make bench puts it there; the eval
+venv, scripts/venv.sh eval, has Ray and the harness).
 
 Each configuration runs R times, interleaved with the others (the machine's
 speed drifts), and its median is kept. The batch is N copies of PETS09-S2L1 (768x576, 795 frames; links to the
@@ -16,10 +20,7 @@ import sys
 import tempfile
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.dirname(HERE)
-sys.path.insert(0, os.path.join(TOP, "python"))
-from cteval.data import video  # noqa: E402
+from cteval.data import TOP, video
 
 
 def main():
@@ -29,9 +30,13 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--png", default=os.path.join(TOP, "docs", "img", "batch-throughput.png"))
     a = ap.parse_args()
+    # The library of the build; Ray's workers and the pool's find the
+    # binding as this process does, on PYTHONPATH.
     os.environ["CTRACK_LIBRARY"] = os.path.abspath(os.path.join(a.build, "lib", "libctrack.so"))
-    os.environ["PYTHONPATH"] = os.path.join(TOP, "python")
-    from ctrack import batch
+    try:
+        from ctrack import batch
+    except ImportError:
+        raise SystemExit("batch_throughput: put the binding on the path: PYTHONPATH=python ...")
 
     src = video("PETS09-S2L1")
     tmp = tempfile.mkdtemp(prefix="ctrack-batch-")

@@ -326,12 +326,35 @@ START_TEST(absurd_windows_stay_in_range)
         {1e12, 100, 40, 80},
         {-1e12, -1e12, 1e13, 1e13}, {100, 1e9, 40, 1e9}, {NAN, 100, 40, 80},
         {100, 100, NAN, 80},   {100, 100, INFINITY, 80}};
+    const MeanShiftParams p;
     for (const auto &w : windows) {
         ColorModel mw;
         ms.build(a.planes(), w[0], w[1], w[2], w[3], &mw); // samples, and the ring around
-        MeanShiftResult r = ms.track(a.planes(), w[0], w[1], w[2], w[3], m, MeanShiftParams());
-        (void)r;
-        ms.learn(a.planes(), w[0], w[1], w[2], w[3], 26, 45000, &mw);
+        const MeanShiftResult r = ms.track(a.planes(), w[0], w[1], w[2], w[3], m, p);
+        // A similarity, a count of moves within the bound, and a window
+        // that moved no farther than a finite start allows.
+        ck_assert_int_ge(r.rho, 0);
+        ck_assert_int_le(r.rho, (int)kQ16);
+        ck_assert_int_ge(r.iterations, 0);
+        ck_assert_int_le(r.iterations, p.max_iterations);
+        const bool finite = std::isfinite(w[0]) && std::isfinite(w[1]) &&
+                            std::isfinite(w[2]) && std::isfinite(w[3]);
+        if (finite)
+            ck_assert(std::isfinite(r.cx) && std::isfinite(r.cy));
+        // A window with no pixel in the frame (NaN, or far outside) makes no
+        // model and does not move; a model learns nothing from it.
+        const bool outside = !finite || w[0] - w[2] / 2 > 200 || w[1] - w[3] / 2 > 200;
+        if (outside) {
+            ck_assert(!mw.valid);
+            ck_assert_int_eq(r.iterations, 0);
+            ck_assert_int_eq(r.rho, 0);
+        }
+        ColorModel before = m;
+        const bool learnt = ms.learn(a.planes(), w[0], w[1], w[2], w[3], 26, 0, &before);
+        if (outside) {
+            ck_assert(!learnt);
+            ck_assert_int_eq(memcmp(before.q, m.q, sizeof m.q), 0);
+        }
     }
 }
 END_TEST

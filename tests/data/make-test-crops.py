@@ -2,7 +2,9 @@
 """Cuts small real test clips from PETS09-S2L1 for the unit tests, chosen
 from the ground truth by rule (never by hand), into tests/data/pets09-crops/.
 
-    make-test-crops.py            (needs scripts/fetch-pets09.sh's cached frames)
+    .venv-eval/bin/python tests/data/make-test-crops.py
+        (the eval venv, scripts/venv.sh eval, has the harness; needs
+        scripts/fetch-pets09.sh's cached frames)
 
 Mean shift clips ("walk-*"): one person with no other ground-truth box near,
 at least 70 pixels tall and 40 pixels inside the image, in frame f and f+2;
@@ -18,14 +20,11 @@ stretch. The clip holds frames f - 6 and f + 6 of both boxes' union grown by
 """
 import os
 import subprocess
-import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-from y4m import open_y4m, i420_planes  # noqa: E402
+from cteval.data import TOP
+from cteval.y4m import i420_planes, open_y4m
 
 OUT = os.path.join(TOP, "tests", "data", "pets09-crops")
 GT = os.path.join(TOP, "tests", "data", "mot15", "PETS09-S2L1", "gt", "gt.txt")
@@ -124,7 +123,7 @@ def write_clip(path, frames, x0, y0, x1, y1, W, H):
 
 
 def main():
-    pets = subprocess.run([os.path.join(HERE, "fetch-pets09.sh")], check=True,
+    pets = subprocess.run([os.path.join(TOP, "scripts", "fetch-pets09.sh")], check=True,
                           capture_output=True, text=True).stdout.strip()
     W, H, _, frames = open_y4m(pets)
     gt = np.loadtxt(GT, delimiter=",")

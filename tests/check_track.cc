@@ -1,0 +1,426 @@
+// The tracking models on their own (internal API): the constant-velocity
+// filter, the association's gates, and what the tracker learns as it runs
+// (the size gate, the detector's scale of scores, the people's size, the
+// scene's motion).
+#include <check.h>
+
+#include "common.h"
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+
+#include "track/gate.h"
+#include "track/motion.h"
+#include "track/person_size.h"
+#include "track/scene.h"
+#include "track/score_scale.h"
+#include "track/size_gate.h"
+#include "track/track.h"
+
+using namespace ctrack;
+
+// ---------------------------------------------------------------------------
+// The filter (motion.h).
+
+// Noise-free positions of a walk at constant velocity: the estimate reaches
+// the walk's position and velocity.
+START_TEST(filter_learns_a_constant_velocity)
+{
+    Axis a;
+    a.init(100, 5, 50);
+    double t = 0;
+    for (int k = 1; k <= 60; k++) {
+        a.predict(0.1, 1.0);
+        t += 0.1;
+        a.update(100 + 30 * t, 2);
+    }
+    ck_assert_double_eq_tol(a.v, 30, 0.3);
+    ck_assert_double_eq_tol(a.x, 100 + 30 * t, 0.05);
+}
+END_TEST
+
+// The covariance grows by the white acceleration's, in time: the closed
+// form after one prediction, and nothing for dt <= 0.
+START_TEST(filter_prediction_grows_with_time)
+{
+    Axis a;
+    a.init(0, 2, 3);
+    a.v = 10;
+    Axis same = a;
+    same.predict(0, 4);
+    same.predict(-1, 4);
+    ck_assert_double_eq(same.x, 0);
+    ck_assert_double_eq(same.p00, 4);
+    const double dt = 0.25, q = 16;
+    a.predict(dt, 4);
+    ck_assert_double_eq_tol(a.x, 2.5, 1e-12);
+    ck_assert_double_eq_tol(a.p00, 4 + dt * dt * 9 + q * std::pow(dt, 4) / 4, 1e-12);
+    ck_assert_double_eq_tol(a.p01, dt * 9 + q * std::pow(dt, 3) / 2, 1e-12);
+    ck_assert_double_eq_tol(a.p11, 9 + q * dt * dt, 1e-12);
+    // Without process noise two half steps are one whole one.
+    Axis h1, h2;
+    h1.init(3, 1, 2);
+    h1.v = -4;
+    h2 = h1;
+    h1.predict(0.5, 0);
+    h1.predict(0.5, 0);
+    h2.predict(1.0, 0);
+    ck_assert_double_eq_tol(h1.x, h2.x, 1e-12);
+    ck_assert_double_eq_tol(h1.p00, h2.p00, 1e-12);
+    ck_assert_double_eq_tol(h1.p11, h2.p11, 1e-12);
+}
+END_TEST
+
+// A measurement pulls the estimate by the Kalman gain and shrinks the
+// variance; one innovation standard deviation away is a normalized
+// innovation squared of 1.
+START_TEST(filter_update_weighs_the_measurement)
+{
+    Axis a;
+    a.init(10, 3, 1); // variance 9
+    const double r = 4; // measurement variance, sd 2
+    ck_assert_double_eq_tol(a.innovation_var(2), 13, 1e-12);
+    ck_assert_double_eq_tol(a.nis(10 + std::sqrt(13.0), 2), 1, 1e-12);
+    a.update(23, 2);
+    ck_assert_double_eq_tol(a.x, 10 + 9.0 / 13 * 13, 1e-12);
+    ck_assert_double_eq_tol(a.p00, 9 * r / (9 + r), 1e-12);
+    ck_assert(a.p00 < 9);
+}
+END_TEST
+
+// A track's box follows its detections; a detection's noise is in box
+// heights, so a tall person's box is trusted to more pixels.
+START_TEST(track_follows_its_detections)
+{
+    Track t;
+    ct_detection d = test_det(100, 50, 40, 100, 0.9f);
+    t.start(d, 0.05, 0, 0);
+    for (int k = 1; k <= 20; k++) {
+        t.predict(0.1, 0.5);
+        d.left += 2;
+        t.correct(d, 0.05, 0, k * 100000);
+    }
+    const Box b = t.box();
+    ck_assert_double_eq_tol(b.left, d.left, 1.0);
+    ck_assert_double_eq_tol(b.height, 100, 0.5);
+    ck_assert_double_eq_tol(t.cx.v, 20, 2); // 2 px a step of 0.1 s
+    ck_assert_int_eq(t.hits, 21);
+    ck_assert(t.centre_innovation_sd(0.05) > 0.05 * 100);
+}
+END_TEST
+
+// ---------------------------------------------------------------------------
+// The gates (gate.h), against comparing every pair.
+
+START_TEST(gate_finds_every_overlap)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> pos(0, 600), size(10, 120);
+    for (int trial = 0; trial < 50; trial++) {
+        Vec<ct_detection> dets;
+        Vec<int> cols;
+        for (int j = 0; j < 40; j++) {
+            const float h = size(rng);
+            dets.push_back(test_det(pos(rng), pos(rng), h * 0.4f, h, 0.9f));
+            if (j % 3 != 0) // a subset, named by position
+                cols.push_back(j);
+        }
+        Gate g;
+        g.index(dets.data(), cols);
+        const Box box{pos(rng), pos(rng), 50, 120};
+        for (double min_iou : {0.05, 0.2, 0.5}) {
+            Vec<Pair> pairs;
+            g.overlapping(3, box, min_iou, pairs);
+            std::set<int> want, got;
+            for (size_t k = 0; k < cols.size(); k++)
+                if (iou(box, det_box(dets[(size_t)cols[k]])) >= min_iou)
+                    want.insert((int)k);
+            for (const Pair &p : pairs) {
+                ck_assert_int_eq(p.row, 3);
+                ck_assert_double_eq_tol(p.cost,
+                                        1 - iou(box, det_box(dets[(size_t)cols[(size_t)p.col]])),
+                                        1e-9);
+                got.insert(p.col);
+            }
+            ck_assert(want.size() <= (size_t)kMaxPairsPerTrack);
+            ck_assert(want == got);
+        }
+    }
+}
+END_TEST
+
+// A flood of identical boxes: one track keeps kMaxPairsPerTrack of them,
+// the first ones.
+START_TEST(gate_bounds_a_flood)
+{
+    Vec<ct_detection> dets(200, test_det(100, 100, 40, 100, 0.9f));
+    Vec<int> cols;
+    for (int j = 0; j < 200; j++)
+        cols.push_back(j);
+    Gate g;
+    g.index(dets.data(), cols);
+    Vec<Pair> pairs;
+    g.overlapping(0, Box{100, 100, 40, 100}, 0.5, pairs);
+    ck_assert_int_eq((int)pairs.size(), kMaxPairsPerTrack);
+    for (int k = 0; k < kMaxPairsPerTrack; k++)
+        ck_assert_int_eq(pairs[(size_t)k].col, k);
+}
+END_TEST
+
+// A new track's reach: a detection that misses the IoU gate is paired when
+// its centre is within reach at a similar height, at a cost between half
+// the gate's and the gate's; not at twice the height, nor beyond reach.
+START_TEST(gate_reach_pairs_a_person_who_walked_on)
+{
+    Vec<ct_detection> dets = {test_det(200, 100, 40, 100, 0.9f),  // 150 px on
+                              test_det(200, 100, 80, 200, 0.9f),  // as far, twice as tall
+                              test_det(400, 100, 40, 100, 0.9f)}; // too far
+    Vec<int> cols = {0, 1, 2};
+    Gate g;
+    g.index(dets.data(), cols);
+    const Box box{50, 100, 40, 100};
+    Vec<Pair> none, some;
+    g.overlapping(0, box, 0.3, none);
+    ck_assert_int_eq((int)none.size(), 0);
+    g.overlapping(0, box, 0.3, some, 200);
+    ck_assert_int_eq((int)some.size(), 1);
+    ck_assert_int_eq(some[0].col, 0);
+    ck_assert(some[0].cost >= 0.35 - 1e-9 && some[0].cost <= 0.7 + 1e-9);
+    Vec<Pair> near;
+    g.near(5, 70, 150, 200, 100, near);
+    ck_assert_int_eq((int)near.size(), 1);
+    ck_assert_int_eq(near[0].row, 5);
+    ck_assert_double_eq_tol(near[0].cost, 150, 1e-9);
+}
+END_TEST
+
+// ---------------------------------------------------------------------------
+// The size gate (size_gate.h).
+
+// People whose height grows with the row of their feet (h = 0.4 y): once
+// enough boxes are seen the line is known, and a box far off it is set
+// aside; before that, and with no gate, every box is let through.
+START_TEST(size_gate_learns_the_line_and_sets_aside_what_is_off_it)
+{
+    SizeGate g;
+    g.set_gate(0.35f);
+    const ct_detection giant = test_det(0, 100, 80, 200, 0.9f); // feet at 300: 120 expected
+    ck_assert(g.admits(giant));
+    for (int k = 0; k < 30; k++) {
+        const double foot = 200 + 10 * k, h = 0.4 * foot;
+        g.observe(foot - h, h);
+    }
+    ck_assert(g.known());
+    ck_assert_double_eq_tol(g.height_at(300), 120, 1e-6);
+    ck_assert(!g.admits(giant));
+    ck_assert(g.admits(test_det(0, 300 - 130, 50, 130, 0.9f))); // 8% taller
+    ck_assert(!g.admits(test_det(0, 300 - 80, 30, 80, 0.9f)));  // a third shorter
+    SizeGate open = g;
+    open.set_gate(0);
+    ck_assert(open.admits(giant));
+    // Bad boxes teach it nothing.
+    SizeGate same = g;
+    same.observe(NAN, 100);
+    same.observe(100, -5);
+    same.observe(100, INFINITY);
+    ck_assert_double_eq(same.height_at(300), g.height_at(300));
+}
+END_TEST
+
+// Its samples fade in time (half a second's time constant): after seconds
+// without a person the line is unknown again, and a camera that moved is
+// learnt anew.
+START_TEST(size_gate_forgets_in_time)
+{
+    SizeGate g;
+    g.set_gate(0.35f);
+    for (int k = 0; k < 30; k++)
+        g.observe(100, 100);
+    ck_assert(g.known());
+    g.age(0.1);
+    ck_assert(g.known());
+    g.age(2.0);
+    ck_assert(!g.known());
+    g.age(-1); // no time passes
+    g.age(NAN);
+    for (int k = 0; k < 40; k++)
+        g.observe(100, 50);
+    ck_assert_double_eq_tol(g.height_at(150), 50, 5);
+    g.reset();
+    ck_assert(!g.known());
+}
+END_TEST
+
+// ---------------------------------------------------------------------------
+// The detector's scale of scores (score_scale.h).
+
+START_TEST(score_scale_bounds_confirmation_by_the_detector_best_boxes)
+{
+    ScoreScale s;
+    ck_assert_float_eq(s.confirm(0.95f), 0.95f); // nothing seen: as asked
+    // A detector never surer than 0.9: its boxes confirm at 0.9.
+    for (int k = 0; k < 100; k++)
+        s.observe(0.9f);
+    ck_assert_float_eq_tol(s.confirm(0.95f), 0.9f, 1e-6);
+    ck_assert_float_eq(s.confirm(0.5f), 0.5f); // never above what is asked
+    // Scores spread evenly: the best 40% start at 0.6.
+    s.reset();
+    for (int k = 0; k < 1000; k++)
+        s.observe((k + 0.5f) / 1000);
+    ck_assert_float_eq_tol(s.confirm(0.95f), 0.59f, 0.011);
+    // Scores off the scale count at its ends.
+    s.reset();
+    for (int k = 0; k < 10; k++) {
+        s.observe(NAN);
+        s.observe(-3);
+        s.observe(7);
+    }
+    ck_assert_float_eq_tol(s.confirm(0.95f), 0.0f, 1e-6);
+}
+END_TEST
+
+// A long run keeps learning: the counts halve rather than overflow, and a
+// detector whose scores drop is followed.
+START_TEST(score_scale_keeps_learning)
+{
+    ScoreScale s;
+    for (int k = 0; k < (1 << 21); k++)
+        s.observe(0.99f);
+    ck_assert_float_eq_tol(s.confirm(1.0f), 0.99f, 1e-6);
+    for (int k = 0; k < (1 << 21); k++)
+        s.observe(0.7f);
+    ck_assert_float_eq_tol(s.confirm(1.0f), 0.7f, 1e-6);
+}
+END_TEST
+
+// ---------------------------------------------------------------------------
+// The people's size (person_size.h).
+
+// Boxes of people on a flat ground (h = 0.3 y + 20, widths 0.35 h): the
+// line is found within the bins' 10%, and the width three in four stay
+// under.
+START_TEST(person_size_fits_the_ground_line)
+{
+    PersonSize p;
+    p.reset(480);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> foot(120, 470), ratio(0.25, 0.45);
+    for (int k = 0; k < 19; k++) {
+        const double y = foot(rng), h = 0.3 * y + 20;
+        p.observe(y - h, h, ratio(rng) * h);
+    }
+    p.learn();
+    ck_assert(!p.known()); // fewer than 20 boxes
+    ck_assert_double_eq(p.height_at(300), 0);
+    for (int k = 0; k < 400; k++) {
+        const double y = foot(rng), h = 0.3 * y + 20;
+        p.observe(y - h, h, ratio(rng) * h);
+    }
+    p.learn();
+    ck_assert(p.known());
+    for (double y : {150.0, 300.0, 450.0})
+        ck_assert_double_eq_tol(p.height_at(y), 0.3 * y + 20, 0.1 * (0.3 * y + 20));
+    ck_assert_double_eq_tol(p.aspect(), 0.40, 0.04);
+    ck_assert_double_eq_tol(p.width_at(300), p.aspect() * p.height_at(300), 1e-9);
+    ck_assert(p.min_height() < p.typical_height() && p.typical_height() < p.max_height());
+    ck_assert_uint_eq(p.samples(), 419);
+    p.reset(480);
+    ck_assert(!p.known());
+    ck_assert_uint_eq(p.samples(), 0);
+}
+END_TEST
+
+// A camera over no flat ground (people smaller lower in the image) gets a
+// constant height; boxes before the image's height is known, or without a
+// size, teach it nothing.
+START_TEST(person_size_never_slopes_the_wrong_way)
+{
+    PersonSize p;
+    p.observe(100, 80, 30); // image height unknown
+    p.reset(480);
+    p.observe(100, 0, 30);
+    p.observe(100, 80, -1);
+    p.observe(100, NAN, 30);
+    ck_assert_uint_eq(p.samples(), 0);
+    for (int k = 0; k < 200; k++) {
+        const double y = 100 + k * 1.8, h = 200 - 0.3 * y;
+        p.observe(y - h, h, 0.4 * h);
+    }
+    p.learn();
+    ck_assert(p.known());
+    ck_assert_double_eq(p.slope(), 0);
+    ck_assert_double_eq(p.height_at(100), p.height_at(450));
+    ck_assert(p.height_at(0) >= PersonSize::kPriorMinHeight * 0.25);
+}
+END_TEST
+
+// ---------------------------------------------------------------------------
+// The scene's motion (scene.h).
+
+// Innovations as the filter expects them leave the scale at 1 and boxes at
+// the estimate; larger ones raise it in time (0.3 s's time constant, in
+// log terms), and the reported box goes toward the detection.
+START_TEST(scene_motion_follows_the_innovations_in_time)
+{
+    SceneMotion m;
+    for (int k = 0; k < 50; k++) {
+        m.observe(1.0);
+        m.learn(0.04);
+    }
+    ck_assert_double_eq_tol(m.scale(), 1, 1e-9);
+    ck_assert_double_eq_tol(m.follow(), 0, 1e-12);
+    // A scene four times less predictable than motion_noise says: the
+    // innovations' normalized square is 4 over the scale learnt so far.
+    // After 0.3 s at 10 and at 30 frames/s, the same scale: 4^(1 - 1/e).
+    SceneMotion a, b;
+    for (int k = 0; k < 3; k++) {
+        a.observe(4.0 / a.scale());
+        a.learn(0.1);
+    }
+    for (int k = 0; k < 9; k++) {
+        b.observe(4.0 / b.scale());
+        b.learn(0.1 / 3);
+    }
+    const double want = std::pow(4.0, 1 - std::exp(-1.0));
+    ck_assert_double_eq_tol(a.scale(), want, 1e-9);
+    ck_assert_double_eq_tol(b.scale(), want, 1e-9);
+    ck_assert(a.follow() > 0 && a.follow() < 1);
+    // No innovation, or no time, changes nothing; one wild innovation
+    // counts as about three standard deviations (a normalized square of 9).
+    SceneMotion c = a;
+    c.learn(0.5);
+    ck_assert_double_eq(c.scale(), a.scale());
+    c.observe(1e9);
+    c.learn(0);
+    ck_assert_double_eq(c.scale(), a.scale());
+    c.observe(1e9);
+    c.learn(10);
+    ck_assert_double_eq_tol(c.scale(), 9.0 * a.scale(), 1e-6);
+    c.reset();
+    ck_assert_double_eq(c.scale(), 1);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("track");
+    TCase *tc = tcase_create("models");
+    tcase_add_test(tc, filter_learns_a_constant_velocity);
+    tcase_add_test(tc, filter_prediction_grows_with_time);
+    tcase_add_test(tc, filter_update_weighs_the_measurement);
+    tcase_add_test(tc, track_follows_its_detections);
+    tcase_add_test(tc, gate_finds_every_overlap);
+    tcase_add_test(tc, gate_bounds_a_flood);
+    tcase_add_test(tc, gate_reach_pairs_a_person_who_walked_on);
+    tcase_add_test(tc, size_gate_learns_the_line_and_sets_aside_what_is_off_it);
+    tcase_add_test(tc, size_gate_forgets_in_time);
+    tcase_add_test(tc, score_scale_bounds_confirmation_by_the_detector_best_boxes);
+    tcase_add_test(tc, score_scale_keeps_learning);
+    tcase_add_test(tc, person_size_fits_the_ground_line);
+    tcase_add_test(tc, person_size_never_slopes_the_wrong_way);
+    tcase_add_test(tc, scene_motion_follows_the_innovations_in_time);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+}
