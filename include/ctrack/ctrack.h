@@ -102,89 +102,114 @@ typedef enum ct_pedestrian_test {
     CT_PEDESTRIAN_SIZE = 1
 } ct_pedestrian_test;
 
+/* Each field states its default (ct_config_default()) and its range:
+ * ct_config_check() and ct_tracker_create() refuse a value outside it, or
+ * NaN. A bound may be another field's value. */
 typedef struct ct_config {
     /* sizeof(ct_config) as the caller's header knows it. */
     size_t size;
-    /* A ct_source value. */
+    /* A ct_source value.
+     * Default 0 (CT_SOURCE_DETECTIONS); range [0, 1]. */
     int32_t source;
     /* Detections scoring at least this are matched first and may start a
-     * track; in [0, 1]. */
+     * track.
+     * Default 0.6; range [0, 1]. */
     float high_score;
     /* Detections scoring below this are ignored; those between low_score and
-     * high_score only continue existing confirmed tracks (second pass). */
+     * high_score only continue existing confirmed tracks (second pass).
+     * Default 0.1; range [0, high_score]. */
     float low_score;
     /* Minimum IoU between a track's predicted box and a high-score detection
-     * for them to be matched; in (0, 1]. */
+     * for them to be matched.
+     * Default 0.2; range (0, 1]. */
     float match_iou;
-    /* Minimum IoU for the low-score second pass; in (0, 1]. */
+    /* Minimum IoU for the low-score second pass.
+     * Default 0.5; range (0, 1]. */
     float low_match_iou;
-    /* Minimum IoU for a tentative track to be matched; in (0, 1]. A
+    /* Minimum IoU for a tentative track to be matched. A
      * detection that misses it is matched when its centre lies within two
      * standard deviations of where the track's motion model predicts it
      * (at a few frames a second a new track's person walks out of their
-     * last box; docs/API.md, "Each step"). */
+     * last box; docs/API.md, "Each step").
+     * Default 0.3; range (0, 1]. */
     float tentative_match_iou;
-    /* Consecutive matched steps that confirm a new track (>= 1). */
+    /* Consecutive matched steps that confirm a new track.
+     * Default 3; range [1, 1000]. */
     int32_t min_hits;
     /* Seconds a confirmed track that lost its detections is kept, predicted
-     * by its motion model, before it is removed. */
+     * by its motion model, before it is removed.
+     * Default 3; range [0, 3600]. */
     double lost_lifetime;
     /* Seconds during which a lost track may still be reported by
      * ct_tracker_get_tracks() (its box predicted; report_lost_sd narrows
-     * which); 0 reports only tracks that a detection updated this step. At
-     * most lost_lifetime. */
+     * which); 0 reports only tracks that a detection updated this step.
+     * Default 0.5; range [0, lost_lifetime]. */
     double report_lost_time;
     /* Motion model: standard deviation of the acceleration of the box centre
-     * and size, in box heights per second squared. */
+     * and size, in box heights per second squared.
+     * Default 0.5; range (0, 100]. */
     float motion_noise;
-    /* Standard deviation of a detection's position error, in box heights. */
+    /* Standard deviation of a detection's position error, in box heights.
+     * Default 0.05; range (0, 10]. */
     float detection_noise;
     /* Non-zero: reported boxes are clipped to the image when its size is
-     * known (a frame with width and height). */
+     * known (a frame with width and height).
+     * Default 0; range [0, 1]. */
     int32_t clip_boxes;
     /* Upper bound on live tracks (tentative, confirmed and lost); when it is
-     * reached, new detections do not start tracks. */
+     * reached, new detections do not start tracks.
+     * Default 1000; range [1, 100000]. */
     int32_t max_tracks;
 
     /* Added in 0.2.0. */
 
     /* Non-zero: with pixels, each confirmed track keeps a colour model and
      * multiscale mean shift refines its predicted box before association
-     * and follows it when its detection is missing. */
+     * and follows it when its detection is missing.
+     * Default 1; range [0, 1]. */
     int32_t mean_shift;
-    /* Bhattacharyya coefficient, in (0, 1), under which the pixels no longer
-     * hold a track: it becomes lost. */
+    /* Bhattacharyya coefficient under which the pixels no longer
+     * hold a track: it becomes lost.
+     * Default 0.7; range (0, 1). */
     float mean_shift_min_similarity;
-    /* Seconds mean shift may carry a track without a detection. */
+    /* Seconds mean shift may carry a track without a detection.
+     * Default 1; range [0, 3600]. */
     double mean_shift_max_time;
-    /* Learning rate of the colour model (the paper's eq. 9), in [0, 1]. */
+    /* Learning rate of the colour model (the paper's eq. 9).
+     * Default 0.2; range [0, 1]. */
     float model_learning_rate;
     /* Coarse to fine, for fast motion: when the similarity at a track's
-     * prediction is under this, in [0, 1), mean shift first searches with a
-     * window 1.5 times larger. 0 (the default) never does. */
+     * prediction is under this, mean shift first searches with a window 1.5
+     * times larger. 0 never does.
+     * Default 0; range [0, 1). */
     float mean_shift_coarse_below;
 
     /* Added in 0.3.0. */
 
     /* Non-zero: with pixels, each confirmed track keeps an appearance
      * template, compared with candidates by Deformable Diversity Similarity
-     * (DDIS) in association and to re-identify lost tracks. */
+     * (DDIS) in association and to re-identify lost tracks.
+     * Default 1; range [0, 1]. */
     int32_t appearance;
-    /* Weight of (1 - DDIS) beside (1 - IoU) in the association cost, >= 0. */
+    /* Weight of (1 - DDIS) beside (1 - IoU) in the association cost.
+     * Default 0.1; range [0, 100]. */
     float appearance_weight;
-    /* DDIS, in (0, 1), at or above which a lost track takes back a new
-     * detection near where it was heading (re-identification). */
+    /* DDIS at or above which a lost track takes back a new
+     * detection near where it was heading (re-identification).
+     * Default 0.1; range (0, 1). */
     float reid_min_similarity;
     /* How far a lost track may be re-identified from its predicted centre,
      * in its box heights per second it has been lost (at least one box
-     * height). */
+     * height).
+     * Default 1.5; range [0, 1000]. */
     float reid_max_speed;
 
     /* Added in 0.4.0. */
 
     /* With source CT_SOURCE_PIXELS, what high_score is to a detector's
-     * scores: candidates whose contour-template vote reaches it, in [0, 1],
-     * are matched first and may start tracks. */
+     * scores: candidates whose contour-template vote reaches it are matched
+     * first and may start tracks.
+     * Default 0.8; range [low_score, 1]. */
     float candidate_min_score;
 
     /* Added in 0.5.0. */
@@ -198,7 +223,8 @@ typedef struct ct_config {
      * Where too little of the box is foreground to vote (a person standing
      * still, or hidden), the detection is left as it is.
      * ct_tracker_get_candidates() then returns one vote per detection, in
-     * their order. 0 (the default) does not verify. */
+     * their order. 0 does not verify.
+     * Default 0; range [0, 1]. */
     int32_t verify_detections;
 
     /* Added in 0.9.0. */
@@ -206,27 +232,29 @@ typedef struct ct_config {
     /* With source CT_SOURCE_DETECTIONS, detections scoring at least this
      * (and high_score) may start a (tentative) track; those between
      * high_score and this are matched first and continue tracks, but start
-     * none. In [0, 1]; at or under high_score, every high-score detection
-     * may start one. See also confirm_score. */
+     * none. At or under high_score, every high-score detection may start
+     * one. See also confirm_score.
+     * Default 0.7; range [0, 1]. */
     float start_score;
     /* Non-zero: a lost track is reported (within report_lost_time) only
      * while its box is likely right and its person hidden: another track
      * covers a fifth of its box, and the standard deviation of its
      * predicted centre is at most this many box widths across and box
      * heights down. 0 reports every lost track within report_lost_time.
-     * In [0, 10]. */
+     * Default 0.08; range [0, 10]. */
     float report_lost_sd;
     /* With source CT_SOURCE_PIXELS: a ct_pedestrian_test, what gives each
      * candidate its score (1 or 0 with CT_PEDESTRIAN_SIZE; the candidates'
-     * votes and distances are reported either way). */
+     * votes and distances are reported either way).
+     * Default 0 (CT_PEDESTRIAN_TEMPLATE); range [0, 1]. */
     int32_t pedestrian_test;
     /* With source CT_SOURCE_DETECTIONS: as it runs, the tracker learns how
      * tall its confirmed people are where their feet stand (a line in the
      * feet's row, its samples fading with a time constant of half a second
      * so that a moving camera is followed), and ignores a detection whose
      * height differs from the line's by more than this natural log ratio
-     * (the default, 0.35: a detection 42% taller or 30% shorter). 0 ignores
-     * none. In [0, 10]. */
+     * (0.35: a detection 42% taller or 30% shorter). 0 ignores none.
+     * Default 0.35; range [0, 10]. */
     float size_gate;
     /* With source CT_SOURCE_DETECTIONS: a tentative track is confirmed
      * (given an id and reported) only once one of its detections scored at
@@ -239,8 +267,9 @@ typedef struct ct_config {
      * 2015 sequences, 56% of the public boxes scoring 0.8 to 0.95 match no
      * one at IoU 0.5, 13% of those above), and its false boxes come back
      * frame after frame: they may start tracks, which count once the
-     * detector was sure. In [0, 1]; at or under start_score, every track
-     * is confirmed after min_hits. */
+     * detector was sure. At or under start_score, every track is
+     * confirmed after min_hits.
+     * Default 0.95; range [0, 1]. */
     float confirm_score;
 } ct_config;
 
