@@ -1,5 +1,6 @@
 // Writes the masks of the blobs the pixels-only tracker finds, for
-// eval/recognition.py: the labelled set of ALGORITHM.md ("Measures") and
+// eval/recognition.py: the labelled set of docs/algorithm.md ("What the paper
+// measures") and
 // the real blobs of the contour template's unit test. Internal: it links the
 // engine itself, to reach its foreground mask. Not installed.
 //

@@ -600,26 +600,29 @@ NOTES = """## Notes
   `verify_detections=1`: the contour template votes on the foreground inside
   each detection's box, and a detection it rejects can no longer start a track
   (docs/notes/pixels.md). An option, off by default.
-- **Peers.** ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
-  to the sequence's); SORT and OC-SORT as Roboflow's trackers 2.6.1 ships them
-  (defaults, `frame_rate` set to the sequence's; boxes reported once a track is
-  confirmed); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
-  baseline is OpenCV's MOG2 (defaults, shadows dropped), a 3x3 opening and a 7x7
-  closing, contours of at least 400 pixels as boxes, and an IoU tracker (IoU >= 0.3,
-  3 hits to confirm, 3 frames kept). "OpenCV KCF / CSRT per person" is
-  tracking by detection as people build it from OpenCV's own trackers
-  (opencv-contrib-python 4.10): the same IoU tracker on the public
-  detections, where each track runs OpenCV's tracker on every frame, is
-  matched by the box that tracker gives, is started again on each matched
-  detection's box, and between detections is reported where the tracker
-  follows the person, while the tracker says it holds them. Their time
-  includes OpenCV's trackers, not the conversion of the frames to BGR.
-  `eval/cteval/peers.py` has them.
-- **Barycenter error** (the paper's measure, ALGORITHM.md): over the matched pairs,
+- **Barycenter error** (the paper's measure, docs/algorithm.md): over the matched pairs,
   the distance between the track's and the ground truth's box centres divided by the
   ground-truth box height.
 - **Feature recognition accuracy** (the paper's third measure) is in
   docs/notes/recognition.md (`eval/recognition.py`).
+
+## Peers
+
+ByteTrack as supervision 0.30.9 ships it (defaults, `frame_rate` set
+to the sequence's); SORT and OC-SORT as Roboflow's trackers 2.6.1 ships them
+(defaults, `frame_rate` set to the sequence's; boxes reported once a track is
+confirmed); norfair 2.3.0 with IoU distance, threshold 0.7; the pixels-only
+baseline is OpenCV's MOG2 (defaults, shadows dropped), a 3x3 opening and a 7x7
+closing, contours of at least 400 pixels as boxes, and an IoU tracker (IoU >= 0.3,
+3 hits to confirm, 3 frames kept). "OpenCV KCF / CSRT per person" is
+tracking by detection as people build it from OpenCV's own trackers
+(opencv-contrib-python 4.10): the same IoU tracker on the public
+detections, where each track runs OpenCV's tracker on every frame, is
+matched by the box that tracker gives, is started again on each matched
+detection's box, and between detections is reported where the tracker
+follows the person, while the tracker says it holds them. Their time
+includes OpenCV's trackers, not the conversion of the frames to BGR.
+`eval/cteval/peers.py` has them.
 """
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The paper's "feature recognition accuracy", under the label rule of
-issue 18 (which replaces ALGORITHM.md's "Measures"), and the thresholds of
-the contour template's regions.
+docs/algorithm.md ("What the paper measures"), and the thresholds of the
+contour template's regions.
 
     recognition.py BUILD_DIR [--write] [--report]
 
@@ -24,7 +24,7 @@ the contour template's regions.
    frames 1-400, 401-795 and on TUD-Campus, beside a size-and-aspect-ratio
    filter whose bounds are chosen on frames 1-400, and the candidates'
    recall and precision; where the negatives the vote accepts lie; and the
-   same figures under ALGORITHM.md's rule (every negative counted).
+   same figures under a stricter rule that counts every negative.
 4. Chooses each region's threshold again on PETS09-S2L1 frames 1-400, blob
    by blob, for comparison: the one that best separates positives from
    negatives by that region's own vote (balanced accuracy); then the
@@ -134,8 +134,8 @@ UNCERTAIN = -2  # a negative the rule leaves out and counts apart
 
 
 def label(cands, seq):
-    """The label of every candidate row (issue 18's rule, which replaces
-    ALGORITHM.md's): +1 positive, 0 negative, -1 left out (a part of a
+    """The label of every candidate row (docs/algorithm.md's rule): +1
+    positive, 0 negative, -1 left out (a part of a
     person, a group), UNCERTAIN a negative left out of the accuracy and
     counted apart. Returns the labels and, for the uncertain ones, why:
     (at the image's edge, under a public detection, on an ignored person),
@@ -253,7 +253,8 @@ def recall_precision(cands, pred, seq, first, last):
 
 
 def picture_of_false_positives(cands, lab, accepted, seq, path, first=401, n=18):
-    """A contact sheet of the held-out blobs on no one that the vote accepts:
+    """A contact sheet of the blobs on no one that the vote accepts (frames
+    from `first` on):
     the frame around each, the blob in red, the ground-truth boxes in green."""
     import cv2  # the eval venv's; only --report needs it
     from cteval.y4m import open_y4m
@@ -416,7 +417,7 @@ def main():
                                (c[:, 18] <= max_top))[keep], l[keep]),
                      balanced(alone[-1][keep], l[keep]), balanced(no_top[keep], l[keep])))
         uncertain.append((name, *(int(w.sum()) for w in why)))
-        # ALGORITHM.md's rule: every negative counts.
+        # The stricter rule: every negative counts.
         l_old = np.where(l == UNCERTAIN, 0, l)
         k_old = l_old >= 0
         older.append((name, balanced(v[k_old], l_old[k_old]), balanced(s[k_old], l_old[k_old])))
@@ -530,8 +531,8 @@ RECOGNITION_HEAD = """# Feature recognition: the contour template's region vote
 Made by `eval/recognition.py build --report` on %s, with the thresholds
 the library is built with (chosen by tracking, `eval/vote.py`). The blobs are those
 the background model finds when ct-track tracks from the pixels alone; each is
-labelled against the ground truth by rule (issue 18's, which replaces
-ALGORITHM.md's "Measures"):
+labelled against the ground truth by rule (docs/algorithm.md, "What the
+paper measures"):
 
 - **positive** when it matches one person (IoU >= 0.5, or it lies inside
   one person's box and covers at least 40%% of their height);
@@ -548,8 +549,10 @@ ALGORITHM.md's "Measures"):
   ignores: PETS09-S2L1's far off in the top right corner).
 
 The people are the rows the scoring keeps. Balanced accuracy is the mean of
-the true positive and true negative rates. The thresholds were chosen on
-PETS09-S2L1 frames 1-400; frames 401-795 and TUD-Campus are held out. A
+the true positive and true negative rates. The shipped thresholds were
+chosen by tracking both sequences (`eval/vote.py`, docs/tuning.md), so no
+frame here is held out from them; the thresholds chosen blob by blob
+(below, for comparison) are chosen on PETS09-S2L1 frames 1-400. A
 blob is a pedestrian when more than half of the regions that vote say yes,
 it fills no more of its convex hull than a walking person does, its top
 is narrower than its body (0.7.0: a person has a head;

@@ -100,8 +100,8 @@ check "PETS09-S2L1, detections verified by the contour template" PETS09-S2L1 71.
 # ground: 34.0 / 51.3 against 51.0 / 65.7 primed, and PETS09-S2L1 72.5 /
 # 79.4 against 71.7 / 76.4 (identities in its first 300 frames). TUD-Campus's
 # IDF1 fell from 51.5 to 49.4 with the silhouettes' variety (0.9.0), while its
-# condition families rose (docs/tuning.md, "Pixels only: the contour
-# template's thresholds").
+# condition families rose (docs/tuning.md, "The contour template's
+# thresholds").
 # shellcheck disable=SC2086 # each holds two words, MOTA and IDF1
 check "PETS09-S2L1, pixels only" PETS09-S2L1 $pets_floors -r 7 "$pets"
 check "PETS09-S2L1, pixels only, fed live" PETS09-S2L1 71.5 78.0 --prime 0 -r 7 "$pets"

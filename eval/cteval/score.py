@@ -14,7 +14,7 @@ import motmetrics as mm
 
 
 def barycenter_error(acc, gt, ts):
-    """The paper's barycenter error as ALGORITHM.md defines it: over the
+    """The paper's barycenter error as docs/algorithm.md defines it: over the
     matched track/ground-truth pairs, the mean distance between the box
     centres divided by the ground-truth box height, in percent."""
     ev = acc.mot_events

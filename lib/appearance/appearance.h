@@ -1,6 +1,6 @@
 // Appearance templates and Deformable Diversity Similarity (DDIS; Talmi,
-// Mechrez and Zelnik-Manor, CVPR 2017; the paper's eq. 2-6; ALGORITHM.md
-// section 3), the nearest neighbours from nnindex.h.
+// Mechrez and Zelnik-Manor, CVPR 2017; the paper's eq. 2-6;
+// docs/algorithm.md, "Appearance"), the nearest neighbours from nnindex.h.
 #ifndef CTRACK_APPEARANCE_H
 #define CTRACK_APPEARANCE_H
 

@@ -18,7 +18,7 @@ class NNIndex {
 public:
     // At most this many points are searched without a tree. An appearance
     // template has 72; bench/ddis-bench measures both searches on it
-    // (docs/performance.md): the comparison of all pairs takes a fraction of
+    // (docs/bench.md): the comparison of all pairs takes a fraction of
     // FLANN's time and allocates nothing, where FLANN's findNeighbors
     // allocates on every query and its tree on every build.
     static constexpr int kBruteForceMax = 128;

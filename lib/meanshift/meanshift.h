@@ -1,5 +1,5 @@
 // Kernel-based mean shift on colour histograms, in integer arithmetic
-// (ALGORITHM.md section 4; Comaniciu, Ramesh and Meer 2003, with the
+// (docs/algorithm.md, "Mean shift"; Comaniciu, Ramesh and Meer 2003, with the
 // corrected background-weighted histogram of Ning et al. 2012).
 #ifndef CTRACK_MEANSHIFT_H
 #define CTRACK_MEANSHIFT_H

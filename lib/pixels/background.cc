@@ -53,7 +53,7 @@ constexpr int kChromaForeground = 24;
 // fall under these many standard deviations of the scene's noise, in luma
 // (V's floor) and in chroma (the colour test and the shadows' tolerance).
 // Chosen over three strengths of noise and two seeds each
-// (docs/tuning.md, "Pixels only: noise, contrast and black level").
+// (docs/tuning.md, "The scene's noise, contrast and black level").
 CT_TUNABLE(kLumaNoise, "CTRACK_LUMA_NOISE", 3.5);
 constexpr double kChromaNoise = 4.0, kShadowNoise = 1.0;
 

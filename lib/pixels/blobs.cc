@@ -15,7 +15,7 @@ namespace {
 // A blob is kept when it covers at least this part of the box of a person
 // standing where its feet are, and is at least this part of their height
 // (the person's size from PersonSize; chosen over both sequences' condition
-// families, docs/tuning.md, "Pixels only: the size model's constants"; the
+// families, docs/tuning.md, "The people's size: its constants"; the
 // area 0.12 until 0.9.0)...
 CT_TUNABLE(kMinAreaFraction, "CTRACK_MIN_AREA", 0.10);
 CT_TUNABLE(kMinHeightFraction, "CTRACK_MIN_HEIGHT", 0.4);
@@ -26,7 +26,7 @@ constexpr int kPriorMinArea = 400, kPriorMinRows = 20;
 // Fragments merge only while their union is at most this many person
 // heights tall (where the size is known): two people one behind the other
 // are no person. Chosen over both sequences' condition families
-// (docs/tuning.md, "Pixels only: the size model's constants"; 1.3 until
+// (docs/tuning.md, "The people's size: its constants"; 1.3 until
 // 0.9.0).
 CT_TUNABLE(kMaxUnionHeight, "CTRACK_MAX_UNION", 1.2);
 // The bounds on a frame's work (BlobFinder::find()).

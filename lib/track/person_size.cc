@@ -19,7 +19,7 @@ constexpr double kLowestAspect = 0.1, kAspectStep = 1.0580;
 constexpr uint32_t kMinBand = 5, kMinSamples = 20;
 // The width a person is given: the width three people in four stay under, so
 // that a group is split into no more people than it holds (docs/tuning.md,
-// "Pixels only: the size model's constants": the median splits
+// "The people's size: its constants": the median splits
 // TUD-Campus's groups into too many).
 CT_TUNABLE(kWidthQuantile, "CTRACK_WIDTH_QUANTILE", 0.75);
 // A band's counts are halved past this, so that the model keeps learning.
