@@ -90,10 +90,10 @@ for t in $targets; do
     llvm-profdata merge -sparse "$work/$t".*.profraw -o "$work/$t.profdata"
     # The report's rows: file, regions (3 columns), functions (3), lines
     # (3: count, missed, cover), branches (3); the rows of the target's
-    # file, or of the files directly in its folder.
+    # file, or of the files in its folder and below.
     pat="(^|/)$(covered "$t")"
     case $pat in
-    */) pat="$pat[^/]*\$" ;;
+    */) pat="$pat.*\$" ;;
     *) pat="$pat\$" ;;
     esac
     lines=$(llvm-cov report "$build/tests/fuzz/fuzz_$t" -instr-profile="$work/$t.profdata" |

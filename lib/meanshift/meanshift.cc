@@ -99,9 +99,9 @@ void MeanShift::clear_hist()
 namespace {
 
 // One row's run of the window (n samples s pixels apart from column x,
-// with their column terms and chroma offsets) into the histogram: each
-// sample's kernel weight to its bin, its bin to *out; returns the row's
-// weight.
+// with their column terms and, in colour, chroma offsets) into the
+// histogram: each sample's kernel weight to its bin, its bin to *out;
+// returns the row's weight.
 CT_ALWAYS_INLINE uint32_t bin_run(const Planes &img, int y, int x, int s, const int32_t *cols,
                                   const int32_t *chroma, int n, uint32_t rk, uint32_t *hist,
                                   uint16_t **out)
@@ -208,7 +208,8 @@ uint64_t MeanShift::sample(const Planes &img, double cx, double cy, double hw, d
             i1--;
         runs[n_runs++] = Run{x0 + i0 * s, y, i1 - i0};
         const uint32_t rk = (uint32_t)(kKernelOne - row); // Epanechnikov: rk - column term
-        total += bin_run(img, y, x0 + i0 * s, s, cols + i0, chroma + i0, i1 - i0, rk, hist, &out);
+        total += bin_run(img, y, x0 + i0 * s, s, cols + i0, img.color ? chroma + i0 : nullptr,
+                         i1 - i0, rk, hist, &out);
     }
     n_runs_ = n_runs;
     list_touched();
