@@ -302,9 +302,8 @@ def main():
         "frame copied (a memcpy, measured in the same run). The file's cached pages are "
         "dropped and read back first, so that the kernel holds it the same way whoever "
         "wrote it (the small writes of ffmpeg, which made it, leave 4 KiB pages, which make "
-        "ct-track's reads some 20%% dearer at 768x576). From the pixels alone, ct-track "
-        "first primes the background on the first 3 seconds (21 frames, tracked again "
-        "after), as it does by default."
+        "ct-track's reads some 20%% dearer at 768x576). Every run is online, as ct-track "
+        "runs by default (no priming)."
         % (1 if a.quick else 5))
     say("")
     say("| resolution | ct-track, pixels only | ct-track, detections + pixels | "

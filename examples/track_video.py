@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Tracks the pedestrians of any video from Python, with ctrack.
 
-    track_video.py VIDEO [--detections det.txt] [--fps RATE] [-o tracks.txt]
+    track_video.py VIDEO [--detections det.txt] [--fps RATE] [--prime SECONDS]
+                   [-o tracks.txt]
 
 ffmpeg decodes VIDEO (any format it reads) to I420 frames on a pipe
 (ctrack.video.Video); each frame goes to ctrack.Tracker.feed() as a numpy
@@ -9,9 +10,11 @@ array. Without --detections ctrack finds the people in the pixels itself;
 with a MOTChallenge detections file (frame,-1,left,top,width,height,score,...;
 frames 1-based) it tracks them with the pixels' help. The tracks are written
 as MOTChallenge lines (frame,id,left,top,width,height,confidence,-1,-1,-1),
-as ct-track writes them. From the pixels, the tracker first learns the
+as ct-track writes them, online: frame k's tracks from frames 1 to k. With
+--prime, a look-ahead for recorded files, the tracker first learns the
 background from the video's first seconds (Tracker.prime()), as ct-track
-does, so that the people there from its first frame are found from it.
+--prime does, so that the people there from its first frame are found from
+it.
 Needs numpy and ffmpeg; run it from a source
 checkout after `make` (the ctrack package is in python/, the library in
 build/lib/), or with ctrack installed. For many videos at once, see
@@ -34,6 +37,9 @@ def main():
     ap.add_argument("video")
     ap.add_argument("--detections", help="MOTChallenge detections, frames 1-based")
     ap.add_argument("--fps", type=float, help="frame rate (default: the video's)")
+    ap.add_argument("--prime", type=float, default=0, metavar="SECONDS",
+                    help="a look-ahead: learn the background from the first SECONDS before "
+                         "tracking (default 0: online)")
     ap.add_argument("-o", "--output", help="tracks file (default: standard output)")
     a = ap.parse_args()
     dets = None
@@ -48,10 +54,11 @@ def main():
     out = open(a.output, "w") if a.output else sys.stdout
     with video, ctrack.Tracker(fps=rate[0] / rate[1], source=source) as tracker:
         try:
-            # From the pixels: the background learnt from the first seconds
-            # (Tracker.prime()), which are then fed again.
+            # With --prime, from the pixels: the background learnt from the
+            # first seconds (Tracker.prime()), which are then fed again.
             frames = primed(tracker, video, rate,
-                            ctrack.PRIME_SECONDS if source == ctrack.SOURCE_PIXELS else 0)
+                            a.prime if source == ctrack.SOURCE_PIXELS else 0,
+                            note=lambda m: print("track_video: " + m, file=sys.stderr))
             for k, frame in enumerate(frames, start=1):
                 d = dets[dets[:, 0] == k][:, 2:7] if dets is not None else None
                 tracks = tracker.feed(frame, d, timestamp=frame_time(k, rate), format="i420")

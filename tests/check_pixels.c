@@ -1010,7 +1010,7 @@ START_TEST(prime_refuses_bad_frames)
         const char *message;
     } cases[] = {
         {1, "no pixels"},
-        {2, "another format or size"},
+        {2, "one format and size"},
         {2, "does not increase"},
         {1, "stride"},
         {2, "NULL"},

@@ -83,11 +83,13 @@ static void usage(FILE *out)
             "  -r, --fps RATE         frame rate (default 25; a Y4M header's rate unless given)\n"
             "      --no-pixels        read the video for its frames but give the tracker\n"
             "                         detections only\n"
-            "      --prime SECONDS    where the tracker reads a background (without\n"
-            "                         --detections, or verify_detections=1), learn it from\n"
-            "                         the video's first SECONDS, then track from its first\n"
-            "                         frame (default %g; 0: no). The frames are kept in\n"
-            "                         memory (512 MiB at most)\n"
+            "      --prime SECONDS    a look-ahead for recorded files: where the tracker\n"
+            "                         reads a background (without --detections, or\n"
+            "                         verify_detections=1), learn it from the video's first\n"
+            "                         SECONDS, then track from its first frame, so that\n"
+            "                         frame 1's tracks depend on later frames (default 0:\n"
+            "                         online, as a camera; %g is a usual length). The\n"
+            "                         frames are kept in memory (512 MiB at most)\n"
             "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
             "      --overlay FILE     also write the frames as Y4M with boxes, ids and trails\n"
             "                         drawn (grey frames with detections only)\n"
@@ -216,7 +218,7 @@ int options_parse(int argc, char **argv, options *o)
     ct_config_default(&o->cfg, sizeof o->cfg);
     o->progress = isatty(STDERR_FILENO);
     o->format = CT_FORMAT_I420;
-    o->prime = CT_PRIME_SECONDS;
+    o->prime = 0; /* online unless asked */
 
     enum {
         OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,

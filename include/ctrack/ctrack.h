@@ -412,31 +412,43 @@ CT_API int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out,
                                  size_t capacity, size_t elem_size,
                                  size_t *count);
 
-/* Forgets every track and the last timestamp; ids keep increasing. */
+/* Forgets every track, the last timestamp and what the tracker learnt of
+ * the scene (the background model, the scene's motion, the people's size,
+ * the size gate's line, the detector's scale of scores): as a new tracker,
+ * but ids keep increasing. */
 CT_API int ct_tracker_reset(ct_tracker *tracker);
 
-/* Learns the scene's background from n frames of a recording before
- * tracking it (added in 0.9.0): *frames[0..n-1], its first seconds, in
- * order, with increasing timestamps, all with pixels, of one size and
- * format (each a ct_frame of its own, sized by its own size field). Each
- * pixel's median over them (over 31 of them, evenly spaced, when there are
- * more) is the background behind the people who walk through; the frames,
- * with what differs from it by more than five times their noise put back
- * to it, then teach the background model its levels and the scene's
- * noise. Then the tracker
- * forgets the tracks and the last timestamp, as ct_tracker_reset() does,
- * but keeps the background: feed the recording from its first frame, with
- * any timestamps. The people already there when it starts are found from
- * its first frame (CT_SOURCE_PIXELS, or verify_detections), where a live
- * feed has seen no background behind them yet. The frames are read during
- * the call only (at most CT_PRIME_MAX_FRAMES). Their steps count in ct_stats.
- * When the frames are at fault nothing changes; when memory runs out, the
- * tracker is left as after ct_tracker_reset(). (docs/API.md, "A recording's
- * start".) */
+/* A look-ahead for recorded files (added in 0.9.0): learns the scene's
+ * background from a recording's first seconds before tracking it from its
+ * first frame, so that the people there when it starts are found from it
+ * (where a live feed finds them only as they walk off their ground). Frame
+ * 1's tracks then depend on later frames: a camera fed live has no such
+ * frames, and nothing primes unless the host calls this.
+ *
+ * *frames[0..n-1]: the recording's first seconds, in order, with increasing
+ * timestamps, all with pixels, of one size and format (each a ct_frame of
+ * its own, sized by its own size field), read during the call only (at most
+ * CT_PRIME_MAX_FRAMES). Each pixel's median over them (over 31 of them,
+ * evenly spaced, when there are more) is the background behind the people
+ * who walk through; the frames, with what differs from it by more than five
+ * times their noise put back to it, then teach the background model its
+ * levels and the scene's noise. Their steps count in ct_stats.
+ *
+ * What it changes: the background model, learnt from the frames (used from
+ * the pixels, CT_SOURCE_PIXELS, or with verify_detections). What it
+ * forgets, as ct_tracker_reset() does: the tracks and the last timestamp;
+ * feed the recording from its first frame next, with any timestamps. What
+ * it keeps as it was: everything else the tracker has learnt (the scene's
+ * motion, the people's size, the size gate's line, the detector's scale of
+ * scores), none of which ages through the primed frames whatever their
+ * length, and the ids (none is taken). When it fails, for bad frames or for
+ * memory, the tracker is exactly as it was before the call. (docs/API.md,
+ * "A recording's start".) */
 CT_API int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t n);
 
-/* The seconds of a recording's start that ct-track and the Python batch
- * runner prime on by default (docs/tuning.md, "A recording's start"). */
+/* The seconds of a recording's start that ct-track (--prime) and the
+ * Python batch runner suggest priming on, when asked to (docs/tuning.md,
+ * "A recording's start"). */
 #define CT_PRIME_SECONDS 3.0
 /* The most frames ct_tracker_prime() takes. */
 #define CT_PRIME_MAX_FRAMES 65536

@@ -276,6 +276,41 @@ int ct_tracker_feed(ct_tracker *tracker, const ct_frame *frame,
     });
 }
 
+// Checks the frames of a prime call into loaded[0..n-1]: each a frame
+// load_frame() takes, with pixels, of frames[0]'s format and size, in
+// increasing time. Returns CT_OK, or the error with its message.
+static int load_prime_frames(const ct_frame *const *frames, size_t n, ct_frame *loaded,
+                             char *msg, size_t len)
+{
+    for (size_t i = 0; i < n; i++) {
+        char why[400];
+        if (!frames[i])
+            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "frames[%zu]: NULL", i);
+        const int st = ctrack::load_frame(frames[i], &loaded[i], why, sizeof why);
+        const ct_frame &f = loaded[i], &f0 = loaded[0];
+        if (st != CT_OK)
+            return ctrack::fail(msg, len, st, "frames[%zu]: %s", i, why);
+        if (f.format == CT_FORMAT_NONE)
+            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                "frames[%zu]: no pixels (CT_FORMAT_NONE); priming learns "
+                                "the background from the pixels",
+                                i);
+        if (i > 0 && (f.format != f0.format || f.width != f0.width || f.height != f0.height))
+            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                "frames[%zu]: %s %dx%d, where frames[0] is %s %dx%d: one "
+                                "priming takes frames of one format and size",
+                                i, ctrack::format_name(f.format), f.width, f.height,
+                                ctrack::format_name(f0.format), f0.width, f0.height);
+        if (i > 0 && f.timestamp_us <= loaded[i - 1].timestamp_us)
+            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
+                                "frames[%zu].timestamp_us: %lld does not increase (the "
+                                "one before is %lld)",
+                                i, (long long)f.timestamp_us,
+                                (long long)loaded[i - 1].timestamp_us);
+    }
+    return CT_OK;
+}
+
 int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t n)
 {
     if (!tracker)
@@ -295,42 +330,18 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
     ctrack::Stopwatch sw;
     ctrack::MemoryScope scope(&tracker->memory);
     return guarded(tracker, [&]() -> int {
-        // Every frame is checked before the tracker changes.
+        // Every frame is checked, and the median made, before the tracker
+        // changes.
         ctrack::Vec<ct_frame> loaded(n);
-        for (size_t i = 0; i < n; i++) {
-            char why[400];
-            if (!frames[i])
-                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "frames[%zu]: NULL", i);
-            const int st = ctrack::load_frame(frames[i], &loaded[i], why, sizeof why);
-            const ct_frame &f = loaded[i], &f0 = loaded[0];
-            if (st != CT_OK)
-                return ctrack::fail(msg, len, st, "frames[%zu]: %s", i, why);
-            if (f.format == CT_FORMAT_NONE)
-                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                                    "frames[%zu]: no pixels (CT_FORMAT_NONE); priming learns "
-                                    "the background from the pixels",
-                                    i);
-            if (i > 0 && (f.format != f0.format || f.width != f0.width ||
-                          f.height != f0.height))
-                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                                    "frames[%zu]: %dx%d in another format or size than "
-                                    "frames[0] (%dx%d)",
-                                    i, f.width, f.height, f0.width, f0.height);
-            if (i > 0 && f.timestamp_us <= loaded[i - 1].timestamp_us)
-                return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                                    "frames[%zu].timestamp_us: %lld does not increase (the "
-                                    "one before is %lld)",
-                                    i, (long long)f.timestamp_us,
-                                    (long long)loaded[i - 1].timestamp_us);
-        }
+        if (const int st = load_prime_frames(frames, n, loaded.data(), msg, len))
+            return st;
+        ctrack::PackedFrame median, clean;
+        ctrack::median_frame(loaded.data(), n, &median);
         ctrack::Engine &e = tracker->engine;
-        // The priming's steps may confirm tracks on what is left in the
-        // cleaned frames; no host saw their ids, which are given again.
-        const uint64_t next_id = e.next_id();
+        const uint64_t counts[4] = {tracker->steps, tracker->feed_ns, tracker->validate_ns,
+                                    tracker->convert_ns};
+        e.begin_prime();
         try {
-            e.rewind();
-            ctrack::PackedFrame median, clean;
-            ctrack::median_frame(loaded.data(), n, &median);
             // The steps count in ct_stats; the checks, the median and the
             // cleaning are no step's validation, and are not counted.
             for (size_t i = 0; i < n; i++) {
@@ -338,17 +349,18 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
                 sw.lap();
                 step_frame(tracker, clean.frame(), nullptr, 0, 0, sw);
             }
-            e.rewind();
-            e.set_next_id(next_id);
         } catch (...) {
-            e.reset();
-            e.set_next_id(next_id);
+            e.abort_prime();
+            tracker->steps = counts[0];
+            tracker->feed_ns = counts[1];
+            tracker->validate_ns = counts[2];
+            tracker->convert_ns = counts[3];
             throw;
         }
+        e.end_prime();
         return CT_OK;
     });
 }
-
 
 int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
                           size_t elem_size, size_t *count)

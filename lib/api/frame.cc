@@ -13,6 +13,8 @@ namespace {
 constexpr size_t kMaxDetections = 1 << 16;
 constexpr double kMaxCoordinate = 1e6;
 
+} // namespace
+
 const char *format_name(uint32_t f)
 {
     switch (f) {
@@ -24,8 +26,6 @@ const char *format_name(uint32_t f)
     default: return "NONE";
     }
 }
-
-} // namespace
 
 ct_frame default_frame()
 {

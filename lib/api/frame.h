@@ -17,6 +17,10 @@ constexpr int kMaxSide = 16384;
 
 ct_frame default_frame();
 
+// A format's name as the header spells it ("I420"; "NONE" for any other
+// value).
+const char *format_name(uint32_t format);
+
 // Reads the caller's frame and checks its format, size, planes and strides.
 // The timestamp's order is the tracker's business. On failure writes a
 // message into msg and returns a status.

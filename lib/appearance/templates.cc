@@ -45,15 +45,16 @@ double TemplateBank::similarity(const Track &t, int det)
     return ddis_.ddis(templates_[(size_t)t.tmpl], descriptors(det));
 }
 
-void TemplateBank::learn(Vec<Track> &tracks, const Vec<Track> &saved,
+void TemplateBank::learn(Vec<Track> &tracks, const Vec<Track> &saved, const Vec<Track> *kept,
                          int64_t t_us)
 {
     slot_used_.assign(templates_.size(), 0);
-    const Vec<Track> *const both[] = {&tracks, &saved};
-    for (const Vec<Track> *v : both)
-        for (const Track &t : *v)
-            if (t.tmpl >= 0)
-                slot_used_[t.tmpl] = 1;
+    const Vec<Track> *const all[] = {&tracks, &saved, kept};
+    for (const Vec<Track> *v : all)
+        if (v)
+            for (const Track &t : *v)
+                if (t.tmpl >= 0)
+                    slot_used_[t.tmpl] = 1;
     size_t slot = 0;
     for (size_t i = 0; i < tracks.size(); i++) {
         Track &t = tracks[i];

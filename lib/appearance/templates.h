@@ -29,11 +29,13 @@ public:
     double similarity(const Track &t, int det);
     // Templates: made when a track is confirmed, remade from its detection
     // at most every half second while nothing occludes it. A template is
-    // built in a slot that no track points to, in `tracks` or in `saved`
-    // (the tracks as they were before the step, which a failed step
-    // restores), and only then does the track take it: a failed step leaves
-    // every restored track's template untouched.
-    void learn(Vec<Track> &tracks, const Vec<Track> &saved, int64_t t_us);
+    // built in a slot that no track points to, in `tracks`, in `saved` (the
+    // tracks as they were before the step, which a failed step restores) or
+    // in `kept` (those a failed priming restores; may be null), and only
+    // then does the track take it: a failure leaves every restored track's
+    // template untouched.
+    void learn(Vec<Track> &tracks, const Vec<Track> &saved, const Vec<Track> *kept,
+               int64_t t_us);
     size_t memory_bytes() const;
 
 private:

@@ -59,9 +59,23 @@ void PixelCandidates::reset()
     background_.reset();
 }
 
+void PixelCandidates::keep_background()
+{
+    kept_ = make_owned<Background>(background_);
+}
+
+void PixelCandidates::restore_kept_background() noexcept
+{
+    if (kept_) {
+        background_ = std::move(*kept_);
+        kept_.reset();
+    }
+}
+
 size_t PixelCandidates::memory_bytes() const
 {
-    return background_.memory_bytes() + blobs_.memory_bytes() + classifier_.memory_bytes() +
+    return background_.memory_bytes() + (kept_ ? kept_->memory_bytes() : 0) +
+           blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
            dets_.capacity() * sizeof(ct_detection) + whole_.capacity();
 }

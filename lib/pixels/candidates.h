@@ -59,6 +59,13 @@ public:
     // (rollback, after a failed step).
     void commit() { background_.commit(); }
     void rollback() { background_.rollback(); }
+    // Over many steps (a priming): keep_background() keeps a copy of the
+    // background model as it is (it may throw, and then keeps none);
+    // restore_kept_background() puts it back, drop_kept_background()
+    // forgets it. Neither of these throws.
+    void keep_background();
+    void restore_kept_background() noexcept;
+    void drop_kept_background() noexcept { kept_.reset(); }
     size_t memory_bytes() const;
 
 private:
@@ -68,6 +75,7 @@ private:
                            const PersonSize &size, int finest);
 
     Background background_;
+    Owned<Background> kept_; // keep_background()'s copy
     BlobFinder blobs_;
     Classifier classifier_;
     bool have_mask_ = false; // this step

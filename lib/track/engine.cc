@@ -25,7 +25,8 @@ CT_TUNABLE(kNewTrackReach, "CTRACK_NEW_TRACK_REACH", 2.0);
 
 } // namespace
 
-Engine::Engine(const ct_config &cfg) : cfg_(cfg), state_(cfg), saved_(cfg)
+Engine::Engine(const ct_config &cfg)
+    : cfg_(cfg), state_(cfg), before_prime_(cfg), saved_(cfg)
 {
     ms_params_.coarse_below = (int)(cfg.mean_shift_coarse_below * kQ16);
     min_rho_ = (int)(cfg.mean_shift_min_similarity * kQ16);
@@ -37,7 +38,7 @@ void Engine::rewind()
     s.tracks.clear();
     s.reported.clear();
     s.candidates.clear();
-    s.learnt.clock.rewound = s.learnt.clock.rewound || s.has_time;
+    s.clock.rewound = s.clock.rewound || s.has_time;
     s.has_time = false;
     s.last_us = 0;
     pixels_.clear();
@@ -46,8 +47,40 @@ void Engine::rewind()
 void Engine::reset()
 {
     rewind();
+    state_.clock = SceneClock();
     state_.learnt = SceneModels(cfg_);
     pixels_.reset();
+}
+
+void Engine::begin_prime()
+{
+    pixels_.keep_background();
+    try {
+        before_prime_ = state_;
+    } catch (...) {
+        pixels_.drop_kept_background();
+        throw;
+    }
+    priming_ = true;
+    rewind();
+}
+
+void Engine::end_prime() noexcept
+{
+    state_.learnt = before_prime_.learnt;
+    state_.next_id = before_prime_.next_id;
+    rewind();
+    before_prime_ = EngineState(cfg_);
+    pixels_.drop_kept_background();
+    priming_ = false;
+}
+
+void Engine::abort_prime() noexcept
+{
+    std::swap(state_, before_prime_);
+    before_prime_ = EngineState(cfg_);
+    pixels_.restore_kept_background();
+    priming_ = false;
 }
 
 void Engine::refine(const Planes &img)
@@ -322,7 +355,7 @@ Engine::StepTime Engine::advance_clock(int64_t t_us)
     state_.has_time = true;
     // The scene's clock: after rewind(), one frame interval (40 ms when
     // none is known) after its last step, whatever the host's timestamp.
-    SceneClock &c = state_.learnt.clock;
+    SceneClock &c = state_.clock;
     if (time.first && c.rewound)
         c.shift_us = (int64_t)((uint64_t)c.last_us +
                                (uint64_t)(c.interval_us > 0 ? c.interval_us : 40000) -
@@ -490,7 +523,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
         ns[CT_STAGE_MEAN_SHIFT] += sw.lap();
     }
     if (appearance_) {
-        bank_.learn(state_.tracks, saved_.tracks, t_us);
+        bank_.learn(state_.tracks, saved_.tracks, priming_ ? &before_prime_.tracks : nullptr,
+                    t_us);
         ns[CT_STAGE_APPEARANCE] += sw.lap();
     }
 

@@ -38,15 +38,14 @@ struct SceneClock {
 };
 
 // What the tracker learns of the scene as it runs: rewind() keeps it,
-// reset() forgets it. (The background model is the pixels', which commit
-// and roll back their own update.)
+// reset() forgets it, and priming leaves it as it was. (The background
+// model is the pixels', which commit and roll back their own update.)
 struct SceneModels {
     explicit SceneModels(const ct_config &cfg) { size_gate.set_gate(cfg.size_gate); }
     SceneMotion motion;
     PersonSize size;
     SizeGate size_gate; // a detector's people's height (size_gate)
     ScoreScale scores;  // a detector's scale of scores (confirm_score)
-    SceneClock clock;
 };
 
 // Everything a step changes but the background model, in one value: a
@@ -61,6 +60,7 @@ struct EngineState {
     bool has_time = false;
     // What it keeps.
     uint64_t next_id = 1;
+    SceneClock clock; // reset() starts it again
     SceneModels learnt;
     Counters counters;
 };
@@ -83,10 +83,17 @@ public:
     // exposure. The next step may go back in time (a recording played
     // again): the scene's clock goes on from where it was.
     void rewind();
-    // The id the next confirmed track takes; set_next_id() puts back one
-    // taken before (a priming's steps confirm no track a host saw).
-    uint64_t next_id() const { return state_.next_id; }
-    void set_next_id(uint64_t id) { state_.next_id = id; }
+    // Priming (ct_tracker_prime()): begin_prime() keeps the state as it is
+    // and the background model beside it, then rewinds (it may throw, and
+    // then changes nothing); the steps that follow teach the background
+    // model. end_prime() forgets what else they did: the learnt models and
+    // the next id are put back as they were, so that none ages through the
+    // primed stretch and no id a host never saw is taken, and it rewinds.
+    // abort_prime() puts back everything as it was at begin_prime(), the
+    // background model included. Neither throws.
+    void begin_prime();
+    void end_prime() noexcept;
+    void abort_prime() noexcept;
 
     const Vec<ct_track> &reported() const { return state_.reported; }
     const Vec<ct_candidate> &candidates() const { return state_.candidates; }
@@ -183,6 +190,9 @@ private:
 
     const ct_config cfg_;
     EngineState state_;
+    // The state at begin_prime(), while priming (else empty).
+    EngineState before_prime_;
+    bool priming_ = false;
     // The state before the step in progress, restored as a whole if it
     // throws (the restoring copy fits in capacity the vectors already
     // have, so it cannot throw). A member, so that steady state does not

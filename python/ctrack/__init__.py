@@ -21,10 +21,12 @@ import numpy as np
 from . import _abi
 from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
                    SOURCE_DETECTIONS, SOURCE_PIXELS, PEDESTRIAN_TEMPLATE, PEDESTRIAN_SIZE,
-                   PRIME_SECONDS)
+                   PRIME_SECONDS, PRIME_MAX_FRAMES, PRIME_MAX_BYTES)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS", "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "PRIME_SECONDS", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS",
+           "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "PRIME_SECONDS", "PRIME_MAX_FRAMES",
+           "PRIME_MAX_BYTES", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
 #: The version of the header this package mirrors (the library it loads
 #: may be newer: version() tells).
@@ -231,13 +233,16 @@ class Tracker:
         self._last_ts = None
 
     def prime(self, frames, timestamps=None, format=None):
-        """Learns the scene's background from a recording's first seconds
-        (ct_tracker_prime(); PRIME_SECONDS is the length ct-track takes),
-        then forgets the tracks and the time: feed the recording from its
-        first frame next, and the people there when it starts are found
-        from it. frames: a sequence of images as feed() takes them, all of
-        one size and format, with pixels. timestamps: seconds, increasing;
-        None means k / fps for frame k from 0."""
+        """A look-ahead for recorded files: learns the scene's background
+        from a recording's first seconds (ct_tracker_prime(); PRIME_SECONDS
+        is a usual length), then forgets the tracks and the time: feed the
+        recording from its first frame next, and the people there when it
+        starts are found from it, so that frame 1's tracks depend on later
+        frames. Nothing else the tracker learnt changes; a failed call
+        changes nothing. A camera's live stream cannot be primed; no
+        tracker primes unless asked. frames: a sequence of images as feed()
+        takes them, all of one size and format, with pixels. timestamps:
+        seconds, increasing; None means k / fps for frame k from 0."""
         t = self._handle()
         if not hasattr(self._lib, "ct_tracker_prime"):
             raise CtrackError(_abi.ERROR_UNSUPPORTED,

@@ -23,9 +23,14 @@ SOURCE_DETECTIONS = 0
 SOURCE_PIXELS = 1
 PEDESTRIAN_TEMPLATE = 0
 PEDESTRIAN_SIZE = 1
-# The seconds of a recording's start that ct-track and ctrack.batch prime on
-# by default (CT_PRIME_SECONDS; ct_tracker_prime()).
+# Priming, a look-ahead for recorded files (ct_tracker_prime()): the
+# seconds of a recording's start that ct-track and ctrack.batch suggest when
+# asked to prime (CT_PRIME_SECONDS), the most frames the library takes
+# (CT_PRIME_MAX_FRAMES), and the most memory the tools keep frames in for it
+# (ct-track's PRIME_MAX_BYTES).
 PRIME_SECONDS = 3.0
+PRIME_MAX_FRAMES = 65536
+PRIME_MAX_BYTES = 512 << 20
 
 
 def fourcc(s):

@@ -25,10 +25,14 @@ a rerun skips the inputs whose output is there (--force tracks them again).
 A failed input (unreadable, truncated, bad detections) is reported in the
 summary and the others go on.
 
-Where the tracker reads a background (from the pixels alone, or with
-verify_detections), it first learns it from each video's first 3 seconds
-(--prime SECONDS, 0 for none; ct_tracker_prime()), as ct-track does: the
-people there from the first frame are found from it.
+Every input is tracked online, as a camera's stream is: the tracks of frame
+k come from frames 1 to k. --prime SECONDS asks for a look-ahead for
+recorded files, as ct-track --prime does: where the tracker reads a
+background (from the pixels alone, or with verify_detections), it first
+learns it from each video's first SECONDS (ct_tracker_prime(); 3 is a usual
+length), so that the people there from the first frame are found from it,
+and frame 1's tracks then depend on later frames. The frames are kept in
+memory for it: at most 65536, and as many as fit in 512 MiB.
 
 From Python:
 
@@ -263,8 +267,9 @@ def track_one(job, outdir, params=None, library=None, force=False):
                             **params) as t, open(tmp, "w") as f:
             if job["video"] and (t.config["source"] == ctrack.SOURCE_PIXELS or
                                  t.config["verify_detections"]):
-                frame_iter = primed(t, frame_iter, rate,
-                                    job.get("prime", ctrack.PRIME_SECONDS))
+                frame_iter = primed(t, frame_iter, rate, job.get("prime", 0),
+                                    note=lambda m: print("ctrack.batch: %s: %s"
+                                                         % (job["input"], m), file=sys.stderr))
             for k, frame in enumerate(frame_iter, 1):
                 tracks = t.feed(frame, dets.get(k), timestamp=frame_time(k, rate),
                                 format="i420" if frame is not None else None)
@@ -364,9 +369,10 @@ def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force
     the cores); ray: None for a local process pool, True to use the Ray
     session this process already opened, or an address for ray.init
     ("auto", "local", "ray://host:10001"); params: ct_config fields;
-    progress: None (on a terminal), True or False; prime: the seconds of each
-    video a tracker that reads a background learns it from first (default
-    ctrack.PRIME_SECONDS, 0 for none)."""
+    progress: None (on a terminal), True or False; prime: a look-ahead for
+    recorded files, the seconds of each video a tracker that reads a
+    background learns it from first (default 0: online; 3,
+    ctrack.PRIME_SECONDS, is a usual length)."""
     jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
     if prime is not None:
         if not (isinstance(prime, (int, float)) and math.isfinite(prime) and prime >= 0):
@@ -436,8 +442,9 @@ def main(argv=None):
                     help="frame rate: of detections files without a seqinfo.ini, and "
                          "instead of each video's own")
     ap.add_argument("--prime", type=float, metavar="SECONDS",
-                    help="learn the background from each video's first SECONDS before "
-                         "tracking it (default %g; 0: no)" % PRIME_SECONDS)
+                    help="a look-ahead for recorded files: learn the background from each "
+                         "video's first SECONDS before tracking it from its first frame "
+                         "(default 0: online; %g is a usual length)" % PRIME_SECONDS)
     ap.add_argument("--force", action="store_true",
                     help="track again the inputs whose output is already there")
     ap.add_argument("-q", "--quiet", action="store_true", help="no progress")

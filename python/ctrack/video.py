@@ -25,19 +25,33 @@ def frame_time(k, rate):
     return math.floor((k - 1) * 1e6 * den / num + 0.5) / 1e6
 
 
-def primed(tracker, frames, rate, seconds):
-    """As ct-track --prime: primes tracker (Tracker.prime()) on the first
-    ceil(seconds * rate) of frames (I420 arrays at rate (numerator,
-    denominator), timestamps on ct-track's grid) and returns an iterator over
-    all the frames again, from the first, to feed. seconds <= 0: frames as
-    they are."""
+def primed(tracker, frames, rate, seconds, note=None, max_bytes=None):
+    """As ct-track --prime, a look-ahead for recorded files: primes tracker
+    (Tracker.prime()) on the first ceil(seconds * rate) of frames (I420
+    arrays at rate (numerator, denominator), timestamps on ct-track's grid)
+    and returns an iterator over all the frames again, from the first, to
+    feed. seconds <= 0: frames as they are (online). As ct-track, it takes
+    at most PRIME_MAX_FRAMES frames, and as many as fit in max_bytes
+    (default PRIME_MAX_BYTES): past that it primes on fewer and says so
+    through note(message), ct-track's message."""
+    from . import PRIME_MAX_BYTES, PRIME_MAX_FRAMES
     if seconds <= 0:
         return iter(frames)
     frames = iter(frames)
-    start = list(itertools.islice(frames, math.ceil(seconds * rate[0] / rate[1])))
-    if start:
-        tracker.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)],
-                      format="i420")
+    first = next(frames, None)
+    if first is None:
+        return iter(())
+    cap = PRIME_MAX_BYTES if max_bytes is None else max_bytes
+    n = min(math.ceil(seconds * rate[0] / rate[1]), PRIME_MAX_FRAMES)
+    fit = cap // max(1, first.nbytes)
+    if fit < 1:
+        return itertools.chain([first], frames)
+    if n > fit:
+        n = fit
+        if note:
+            note("--prime: %d frames fit in %d MiB, %.2f s" % (n, cap >> 20, n * rate[1] / rate[0]))
+    start = [first] + list(itertools.islice(frames, n - 1))
+    tracker.prime(start, [frame_time(k, rate) for k in range(1, len(start) + 1)], format="i420")
     return itertools.chain(start, frames)
 
 

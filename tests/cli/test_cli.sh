@@ -123,24 +123,27 @@ else
         -d "$tud/det/det.txt" "$tmp/tud.y4m"
     expect "pixels only from standard input" 0 "" -- sh -c "'$ct' -q - < '$tmp/tud.y4m' > '$tmp/px2.txt'"
     same "pixels only, file and standard input" "$tmp/px.txt" "$tmp/px2.txt"
-    # --prime: the first 3 s by default (all 71 frames here), as far past
-    # the video's end as asked; 0 tracks it live, which differs.
-    expect "--prime past the end" 0 "" -- "$ct" -q --prime 100 -o "$tmp/px100.txt" "$tmp/tud.y4m"
-    same "--prime past the end tracks" "$tmp/px100.txt" "$tmp/px.txt"
+    # Online by default: without --prime the tracks are --prime 0's. A
+    # priming (a look-ahead) differs; it takes the whole clip when asked for
+    # more than it holds.
     expect "--prime 0" 0 "" -- "$ct" -q --prime 0 -o "$tmp/px0.txt" "$tmp/tud.y4m"
-    if cmp -s "$tmp/px0.txt" "$tmp/px.txt"; then bad "--prime 0 tracks live" "same tracks as primed"; else ok "--prime 0 tracks live"; fi
-    expect "--prime 0 from standard input" 0 "" -- sh -c "'$ct' -q --prime 0 - < '$tmp/tud.y4m' > '$tmp/px0s.txt'"
-    same "--prime 0, file and standard input" "$tmp/px0.txt" "$tmp/px0s.txt"
+    same "online by default: no --prime is --prime 0" "$tmp/px.txt" "$tmp/px0.txt"
+    expect "--prime 3" 0 "" -- "$ct" -q --prime 3 -o "$tmp/px3.txt" "$tmp/tud.y4m"
+    if cmp -s "$tmp/px3.txt" "$tmp/px.txt"; then bad "--prime 3 primes" "the online tracks"; else ok "--prime 3 primes"; fi
+    expect "--prime past the end" 0 "" -- "$ct" -q --prime 100 -o "$tmp/px100.txt" "$tmp/tud.y4m"
+    same "--prime past the end: the whole clip" "$tmp/px100.txt" "$tmp/px3.txt"
+    expect "--prime 3 from standard input" 0 "" -- sh -c "'$ct' -q --prime 3 - < '$tmp/tud.y4m' > '$tmp/px3s.txt'"
+    same "--prime 3, file and standard input" "$tmp/px3.txt" "$tmp/px3s.txt"
     expect "--prime with detections alone: nothing to prime" 0 "" -- "$ct" -q --prime 2 \
         -d "$tud/det/det.txt" -o "$tmp/y4m-prime.txt" "$tmp/tud.y4m"
     same "--prime with detections: the same tracks" "$tmp/y4m-prime.txt" "$tmp/y4m.txt"
     # A frame cut short inside the primed seconds: the frames before it are
-    # tracked and written, and the error comes where it does unprimed.
-    expect "truncated y4m, pixels only, primed" 1 "truncated frame 71" -- "$ct" -q \
+    # tracked and written, and the error comes where it does online.
+    expect "truncated y4m, pixels only, primed" 1 "truncated frame 71" -- "$ct" -q --prime 3 \
         -o "$tmp/cutpx.txt" "$tmp/cut.y4m"
     [ "$(grep -c 'truncated frame 71' "$tmp/err")" = 1 ] && ok "truncated y4m, primed: said once" \
         || bad "truncated y4m, primed: said once" "$(cat "$tmp/err")"
-    expect "truncated y4m, pixels only, live" 1 "truncated frame 71" -- "$ct" -q --prime 0 \
+    expect "truncated y4m, pixels only, online" 1 "truncated frame 71" -- "$ct" -q \
         -o "$tmp/cutpx0.txt" "$tmp/cut.y4m"
     if [ "$(cut -d, -f1 "$tmp/cutpx.txt" | sort -n | tail -1)" = 70 ]; then
         ok "truncated y4m, primed: frames 1-70 written"

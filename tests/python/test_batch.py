@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from conftest import DATA, TOP
@@ -92,28 +93,68 @@ def env():
     return e
 
 
-def test_priming_as_ct_track(tmp_path):
-    """prime=0: a video from the pixels is tracked live, as ct-track --prime 0
-    tracks it, which differs from the default (primed on 3 seconds); a
-    duration that is not one is refused before anything runs."""
+def test_online_by_default_and_priming_as_ct_track(tmp_path):
+    """A video from the pixels is tracked online unless asked: without
+    prime as with prime=0, and as ct-track tracks it (without --prime);
+    prime=3 is ct-track --prime 3's look-ahead, which differs; a duration
+    that is not one is refused before anything runs."""
     video = os.path.join(DATA, "TUD-Campus", "video.mp4")
     y4m = str(tmp_path / "tud.y4m")
     subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", video, "-f", "yuv4mpegpipe", y4m],
                    check=True)
-    live = subprocess.run([CT_TRACK, "-q", "--prime", "0", y4m], check=True,
-                          capture_output=True).stdout
-    primed = subprocess.run([CT_TRACK, "-q", y4m], check=True, capture_output=True).stdout
-    assert live != primed
-    rows = batch.run([video], str(tmp_path / "live"), workers=1, progress=False,
-                     pixels_only=True, prime=0)
-    assert rows[0]["status"] == "ok", rows[0]
-    assert read(rows[0]["output"]) == live
+    online = subprocess.run([CT_TRACK, "-q", y4m], check=True, capture_output=True).stdout
+    primed = subprocess.run([CT_TRACK, "-q", "--prime", "3", y4m], check=True,
+                            capture_output=True).stdout
+    assert online != primed
+    for name, prime, want in (("default", None, online), ("zero", 0, online),
+                              ("three", 3, primed)):
+        rows = batch.run([video], str(tmp_path / name), workers=1, progress=False,
+                         pixels_only=True, prime=prime)
+        assert rows[0]["status"] == "ok", rows[0]
+        assert read(rows[0]["output"]) == want, name
+    r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "--pixels-only", "-o",
+                        str(tmp_path / "cli"), video], capture_output=True, text=True, env=env())
+    assert r.returncode == 0, r.stderr
+    outs = [f for f in os.listdir(str(tmp_path / "cli")) if f.endswith(".txt")]
+    assert len(outs) == 1, outs
+    assert read(str(tmp_path / "cli" / outs[0])) == online
     for bad in (-1, float("nan"), "3"):
         with pytest.raises(batch.BatchError, match="prime"):
             batch.run([video], str(tmp_path / "bad"), workers=1, progress=False, prime=bad)
     r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "--prime", "x", "-o",
                         str(tmp_path / "bad"), video], capture_output=True, text=True, env=env())
     assert r.returncode == 2 and "--prime" in r.stderr
+
+
+def test_priming_is_capped_as_ct_track_caps_it():
+    """The frames kept for a priming: at most PRIME_MAX_FRAMES whatever the
+    seconds asked, and as many as fit in the memory cap, which says so in
+    ct-track's words; a frame larger than the cap primes nothing."""
+    import ctrack
+    from ctrack.video import primed
+
+    class Primes:
+        def __init__(self):
+            self.n = None
+
+        def prime(self, frames, timestamps, format=None):
+            assert len(frames) == len(timestamps)
+            self.n = len(frames)
+
+    frames = [np.zeros((3, 2), np.uint8)] * (ctrack.PRIME_MAX_FRAMES + 100)
+    t = Primes()
+    assert len(list(primed(t, frames, (25, 1), 1e6))) == len(frames)
+    assert t.n == ctrack.PRIME_MAX_FRAMES
+    notes = []
+    t = Primes()
+    big = [np.zeros((720, 640), np.uint8)] * 50  # 460,800 bytes each
+    assert len(list(primed(t, big, (25, 1), 3, note=notes.append, max_bytes=10 << 20))) == 50
+    assert t.n == (10 << 20) // 460800
+    assert notes == ["--prime: 22 frames fit in 10 MiB, 0.88 s"]
+    t = Primes()
+    assert len(list(primed(t, big, (25, 1), 3, max_bytes=1000))) == 50
+    assert t.n is None
+    assert ctrack.PRIME_MAX_BYTES == 512 << 20
 
 
 def test_broken_inputs_are_reported_and_the_rest_complete(tmp_path, expected):

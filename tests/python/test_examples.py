@@ -22,15 +22,19 @@ def example(args):
 
 
 def test_track_video_matches_ct_track(tmp_path):
+    """Online by default, as ct-track --prime 0; with --prime, as ct-track
+    --prime (a look-ahead, which differs)."""
     y4m = str(tmp_path / "tud.y4m")
     subprocess.run(["ffmpeg", "-v", "error", "-i", os.path.join(TUD, "video.mp4"), "-f",
                     "yuv4mpegpipe", "-pix_fmt", "yuv420p", y4m], check=True)
     det = os.path.join(TUD, "det", "det.txt")
-    for args in ([], ["--detections", det]):
+    online = ct_track(["--prime", "0"], y4m)
+    for args, want in (([], online), (["--prime", "3"], ct_track(["--prime", "3"], y4m)),
+                       (["--detections", det], ct_track(["-d", det], y4m))):
         got = example(args)
-        want = ct_track(["-d", det] if args else [], y4m)
         assert got.count("\n") > 100, "too few tracks: %r" % got[:200]
         assert got == want, "the example and ct-track differ (%s)" % (args or "pixels only")
+    assert example(["--prime", "3"]) != online
 
 
 def test_track_video_refuses_what_ffmpeg_cannot_read(tmp_path):
