@@ -1,11 +1,13 @@
 /* ct-track: runs ctrack over a video file or standard input and writes
  * MOTChallenge tracks. See `ct-track --help` and docs/ct-track.md. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* POSIX.1-2008 with realpath() */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
@@ -69,12 +71,83 @@ static overlay_writer *open_overlay(const run *r, char *msg, size_t len)
                         (int)(den / a), msg, len);
 }
 
+/* A file ct-track reads or writes, and the option that names it. */
+typedef struct {
+    const char *option, *path;
+} named_file;
+
+/* Whether the file at path (standard input for "-") exists, and its
+ * device and inode. */
+static int identify(const char *path, struct stat *st)
+{
+    return strcmp(path, "-") == 0 ? fstat(STDIN_FILENO, st) == 0 : stat(path, st) == 0;
+}
+
+/* The absolute path a file not yet made would have: its folder resolved,
+ * its name as given. Empty when the folder cannot be resolved. */
+static void future_path(const char *path, char *out, size_t len)
+{
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
+    if (slash == path)
+        snprintf(dir, sizeof dir, "/");
+    char *real = realpath(dir, NULL);
+    snprintf(out, len, "%s/%s", real ? real : "", real ? (slash ? slash + 1 : path) : "");
+    free(real);
+}
+
+/* Whether two paths name the same file: by device and inode when both
+ * exist, by their resolved path when neither does yet. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    const int ea = identify(a, &sa), eb = identify(b, &sb);
+    if (ea && eb)
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    if (ea || eb || strcmp(a, "-") == 0 || strcmp(b, "-") == 0)
+        return 0;
+    char fa[8192], fb[8192];
+    future_path(a, fa, sizeof fa);
+    future_path(b, fb, sizeof fb);
+    return fa[0] && strcmp(fa, fb) == 0;
+}
+
+/* Refuses, before anything is opened for writing, an output that is an
+ * input (writing would truncate what is to be read) or another output:
+ * the same file whatever the path's spelling. Returns 0, or -1 with the
+ * reason printed. */
+static int outputs_are_not_inputs(const options *o)
+{
+    const named_file in[] = {{"INPUT", o->input_path}, {"--detections", o->det_path}};
+    const named_file out[] = {{"--output", o->out_path},
+                              {"--overlay", o->overlay_path},
+                              {"--candidates", o->candidates_path}};
+    const size_t n_in = sizeof in / sizeof in[0], n_out = sizeof out / sizeof out[0];
+    for (size_t i = 0; i < n_out; i++) {
+        if (!out[i].path || strcmp(out[i].path, "-") == 0)
+            continue;
+        for (size_t j = 0; j < n_in + i; j++) {
+            const named_file *other = j < n_in ? &in[j] : &out[j - n_in];
+            if (other->path && same_file(out[i].path, other->path)) {
+                fprintf(stderr, "ct-track: %s '%s' is the file %s '%s' names: ct-track "
+                                "would overwrite it; give another path\n",
+                        out[i].option, out[i].path, other->option, other->path);
+                return -1;
+            }
+        }
+    }
+    return 0;
+}
+
 /* Opens the detections, the video, the tracker and the outputs; on failure
  * prints why and returns -1. */
 static int open_run(run *r)
 {
     const options *o = r->o;
     char msg[512];
+    if (outputs_are_not_inputs(o) < 0)
+        return -1;
     if (o->det_path && detfile_load(o->det_path, &r->df, msg, sizeof msg) < 0) {
         fprintf(stderr, "ct-track: %s\n", msg);
         return -1;

@@ -10,11 +10,19 @@
 The library is found, in this order: the `library` argument of load(), the
 CTRACK_LIBRARY environment variable, a libctrack beside this package, the
 build folder of a source checkout (after `make`), then the system's.
+
+Threads: a Tracker may be shared between threads. Each call into the
+library (feed, prime, reset, the getters, close) holds the tracker's own
+lock, since ctypes lets other threads run while the library works; calls on
+one tracker are serialised, and close() waits for the call in flight. One
+tracker per thread is fastest: different trackers run at the same time.
 """
 import ctypes
 import ctypes.util
+import functools
 import math
 import os
+import threading
 
 import numpy as np
 
@@ -158,14 +166,29 @@ def _microseconds(ts, what):
     return us
 
 
+def _locked(method):
+    """The method runs holding the tracker's lock: a tracker shared between
+    threads serves one call at a time (the library's contract)."""
+    @functools.wraps(method)
+    def locked(self, *args, **kwargs):
+        with self._lock:
+            return method(self, *args, **kwargs)
+    return locked
+
+
 class Tracker:
     """One tracker. Keyword parameters are the fields of ct_config
     (high_score, min_hits, lost_lifetime, ...; see docs/API.md), plus `fps`
     (default 25), the rate assumed when feed() gets no timestamp, and
     `image_size` (width, height), the image the boxes lie in for steps
-    without pixels until a frame tells it (default unknown: (0, 0))."""
+    without pixels until a frame tells it (default unknown: (0, 0)).
+
+    Safe to share between threads: every call holds the tracker's lock (one
+    call at a time; see the module's help)."""
 
     def __init__(self, fps=25.0, library=None, image_size=None, **params):
+        self._lock = threading.RLock()
+        self._t = None
         self._lib = load(library)
         if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
             raise ValueError("fps: %r is not a positive rate" % (fps,))
@@ -203,10 +226,15 @@ class Tracker:
 
     # -- lifetime ----------------------------------------------------------
     def close(self):
-        """Frees the tracker; feed() then raises. Idempotent."""
-        if getattr(self, "_t", None):
-            self._lib.ct_tracker_destroy(self._t)
-            self._t = None
+        """Frees the tracker, once the call in flight on another thread (if
+        any) has returned; every later call raises ValueError. Idempotent."""
+        lock = getattr(self, "_lock", None)
+        if lock is None:  # __init__ failed before the tracker existed
+            return
+        with lock:
+            if self._t:
+                self._lib.ct_tracker_destroy(self._t)
+                self._t = None
 
     def __enter__(self):
         return self
@@ -219,7 +247,7 @@ class Tracker:
 
     def _handle(self):
         if not self._t:
-            raise ValueError("the tracker is closed")
+            raise ValueError("the tracker is closed (Tracker.close() was called)")
         return self._t
 
     def _check(self, st):
@@ -227,11 +255,13 @@ class Tracker:
             raise _status_error(self._lib, st, self._lib.ct_tracker_last_error(self._t).decode())
 
     # -- tracking ----------------------------------------------------------
+    @_locked
     def reset(self):
         """Forgets every track and the time; ids keep increasing."""
         self._check(self._lib.ct_tracker_reset(self._handle()))
         self._last_ts = None
 
+    @_locked
     def prime(self, frames, timestamps=None, format=None):
         """A look-ahead for recorded files: learns the scene's background
         from a recording's first seconds (ct_tracker_prime(); PRIME_SECONDS
@@ -270,6 +300,7 @@ class Tracker:
         self._last_ts = None
         self._size = (arr[0].width, arr[0].height)
 
+    @_locked
     def feed(self, frame=None, detections=None, timestamp=None, format=None):
         """Runs one step and returns the reported tracks (TRACK_DTYPE).
 
@@ -303,6 +334,7 @@ class Tracker:
             self._size = (f.width, f.height)
         return self.tracks()
 
+    @_locked
     def tracks(self):
         """The tracks reported for the last step (a copy)."""
         t = self._handle()
@@ -317,6 +349,7 @@ class Tracker:
         self._check(st)
         return np.frombuffer(self._out, dtype=TRACK_DTYPE, count=count.value).copy()
 
+    @_locked
     def candidates(self):
         """From the pixels alone (source=SOURCE_PIXELS): the blobs of the
         last step, a numpy structured array (CANDIDATE_DTYPE: the box, the
@@ -336,6 +369,7 @@ class Tracker:
                                                          ctypes.byref(count)))
         return np.frombuffer(buf, dtype=CANDIDATE_DTYPE, count=count.value).copy()
 
+    @_locked
     def person_size(self):
         """What the tracker has learnt of its people's size (library 0.9.0
         or newer): a dict with `known`, and the height in pixels of a
@@ -355,6 +389,7 @@ class Tracker:
                 "samples": s.samples, "typical_height": s.typical_height,
                 "working_scale": s.working_scale}
 
+    @_locked
     def stats(self):
         """The library's counters: steps, feed time and time per stage (in
         seconds), live tracks and the heap bytes the tracker holds."""

@@ -23,7 +23,12 @@ frames_per_second, error. An output is written under a temporary name and
 renamed when complete, so a run stopped half way leaves no partial file, and
 a rerun skips the inputs whose output is there (--force tracks them again).
 A failed input (unreadable, truncated, bad detections) is reported in the
-summary and the others go on.
+summary and the others go on. Ctrl-C (SIGINT, to the process group or to
+this process) stops the run within seconds: queued inputs are cancelled,
+running ones stop at their next frame, no partial file is left, and
+summary.csv marks them "interrupted"; the exit status is then 130. An
+OUTDIR that cannot be made or written in is refused before anything runs
+(exit status 2).
 
 Every input is tracked online, as a camera's stream is: the tracks of frame
 k come from frames 1 to k. --prime SECONDS asks for a look-ahead for
@@ -63,6 +68,14 @@ VIDEO_EXTENSIONS = {".mp4", ".mkv", ".avi", ".mov", ".webm", ".y4m", ".mpg", ".m
                     ".m4v", ".mts", ".flv", ".wmv", ".ogv", ".h264", ".h265", ".hevc", ".mjpeg"}
 SUMMARY_FIELDS = ["input", "output", "status", "frames", "tracks", "seconds",
                   "frames_per_second", "error"]
+
+# Set in a pool's worker processes (_worker_init): once set, the input in
+# progress stops at its next frame (Ctrl-C in the main process).
+_STOP = None
+
+
+class _Interrupted(Exception):
+    """The run was interrupted: the input in progress stops."""
 
 
 class BatchError(Exception):
@@ -244,7 +257,7 @@ def track_one(job, outdir, params=None, library=None, force=False):
         except (OSError, ValueError):  # not ct-track's lines: counted as none
             pass
         return row
-    tmp = os.path.join(outdir, ".%s.txt.%d.partial" % (job["name"], os.getpid()))
+    tmp = _partial(outdir, job["name"], os.getpid())
     t0 = time.perf_counter()
     ids = set()
     frames = 0
@@ -271,6 +284,8 @@ def track_one(job, outdir, params=None, library=None, force=False):
                                     note=lambda m: print("ctrack.batch: %s: %s"
                                                          % (job["input"], m), file=sys.stderr))
             for k, frame in enumerate(frame_iter, 1):
+                if _STOP is not None and _STOP.is_set():
+                    raise _Interrupted()
                 tracks = t.feed(frame, dets.get(k), timestamp=frame_time(k, rate),
                                 format="i420" if frame is not None else None)
                 for line in ctrack.mot_lines(k, tracks):
@@ -278,11 +293,17 @@ def track_one(job, outdir, params=None, library=None, force=False):
                 ids.update(int(i) for i in tracks["id"])
                 frames = k
         os.replace(tmp, out)
+    except _Interrupted:
+        _remove(tmp)
+        row.update(status="interrupted", frames=frames, error="interrupted")
+        return row
     except Exception as e:  # one input's failure is its row's, not the run's
         row["error"] = str(e) or type(e).__name__
-        if os.path.exists(tmp):
-            os.remove(tmp)
+        _remove(tmp)
         return row
+    except BaseException:  # KeyboardInterrupt, a Ray task cancelled: no partial left
+        _remove(tmp)
+        raise
     finally:
         if video is not None:
             video.close()
@@ -331,35 +352,144 @@ class _Progress:
         self.stream.flush()
 
 
-def _ray_tasks(jobs, outdir, params, library, force, address, workers):
-    import ray  # optional: pip install ray
-
-    if address is not True and not ray.is_initialized():
-        env = {k: os.environ[k] for k in ("CTRACK_LIBRARY",) if k in os.environ}
-        if address == "local":
-            ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False,
-                     log_to_driver=False, runtime_env={"env_vars": env})
-        else:
-            ray.init(address=address, log_to_driver=False, runtime_env={"env_vars": env})
-    task = ray.remote(num_cpus=1)(track_one)
-    pending = [task.remote(j, outdir, params, library, force) for j in jobs]
-    while pending:
-        ready, pending = ray.wait(pending, num_returns=1)
-        yield ray.get(ready[0])
+def _partial(outdir, name, pid):
+    """Where an input's output is written until it is complete."""
+    return os.path.join(outdir, ".%s.txt.%d.partial" % (name, pid))
 
 
-def _local_tasks(jobs, outdir, params, library, force, workers):
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+def _remove(path):
+    try:
+        os.remove(path)
+    except FileNotFoundError:
+        pass
 
-    workers = workers or os.cpu_count() or 1
-    if workers == 1:
-        for j in jobs:
-            yield track_one(j, outdir, params, library, force)
-        return
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        futures = [pool.submit(track_one, j, outdir, params, library, force) for j in jobs]
-        for fut in as_completed(futures):
+
+def _interrupted_row(job, outdir):
+    return {"input": job["input"], "output": os.path.join(outdir, job["name"] + ".txt"),
+            "status": "interrupted", "frames": 0, "tracks": 0, "seconds": 0.0,
+            "frames_per_second": 0.0, "error": "interrupted before it started"}
+
+
+def _worker_init(stop):
+    """A pool's worker: Ctrl-C is the main process's to handle (it sets
+    stop, and the input in progress stops at its next frame)."""
+    import signal
+    global _STOP
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _STOP = stop
+
+
+class _Pool:
+    """The inputs on a local process pool (or in this process, with one
+    worker)."""
+
+    def __init__(self, jobs, outdir, args, workers):
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+        self.jobs, self.outdir, self.args = jobs, outdir, args
+        self.workers = workers or os.cpu_count() or 1
+        self.pool = self.stop = None
+        if self.workers > 1:
+            ctx = multiprocessing.get_context()
+            self.stop = ctx.Event()
+            self.pool = ProcessPoolExecutor(max_workers=self.workers, mp_context=ctx,
+                                            initializer=_worker_init, initargs=(self.stop,))
+        self.futures = {}
+
+    def results(self):
+        """Each input's row, as it completes."""
+        from concurrent.futures import as_completed
+        if not self.pool:
+            for j in self.jobs:
+                self.current = j
+                yield track_one(j, self.outdir, *self.args)
+            return
+        self.futures = {self.pool.submit(track_one, j, self.outdir, *self.args): j
+                        for j in self.jobs}
+        for fut in as_completed(self.futures):
             yield fut.result()
+
+    def interrupt(self, reported):
+        """Stops the run: queued inputs cancelled, running ones stopped at
+        their next frame; the rows of the inputs not yet reported."""
+        if not self.pool:
+            return [_interrupted_row(j, self.outdir) for j in self.jobs
+                    if j["input"] not in reported]
+        self.stop.set()
+        for fut in self.futures:
+            fut.cancel()
+        rows = []
+        for fut, j in self.futures.items():
+            if j["input"] in reported:
+                continue
+            rows.append(_interrupted_row(j, self.outdir) if fut.cancelled() else fut.result())
+        return rows
+
+    def close(self):
+        if self.pool:
+            self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+class _Ray:
+    """The inputs as Ray tasks."""
+
+    def __init__(self, jobs, outdir, args, address, workers):
+        import ray  # optional: pip install ray
+        self.ray, self.outdir = ray, outdir
+        if address is not True and not ray.is_initialized():
+            env = {k: os.environ[k] for k in ("CTRACK_LIBRARY",) if k in os.environ}
+            if address == "local":
+                ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False,
+                         log_to_driver=False, runtime_env={"env_vars": env})
+            else:
+                ray.init(address=address, log_to_driver=False, runtime_env={"env_vars": env})
+        task = ray.remote(num_cpus=1)(track_one)
+        self.refs = {task.remote(j, outdir, *args): j for j in jobs}
+
+    def results(self):
+        pending = list(self.refs)
+        while pending:
+            ready, pending = self.ray.wait(pending, num_returns=1)
+            yield self.ray.get(ready[0])
+
+    def interrupt(self, reported):
+        """Cancels every task not reported (a running one gets a
+        KeyboardInterrupt, and removes its partial file); their rows."""
+        left = {ref: j for ref, j in self.refs.items() if j["input"] not in reported}
+        for ref in left:
+            try:
+                self.ray.cancel(ref)
+            except Exception:  # Ray itself went down with the signal
+                pass
+        rows = []
+        for ref, j in left.items():
+            try:
+                rows.append(self.ray.get(ref, timeout=10))
+            except Exception:  # cancelled, or its worker gone
+                rows.append(dict(_interrupted_row(j, self.outdir), error="interrupted"))
+        return rows
+
+    def close(self):
+        pass
+
+
+def _check_outdir(outdir):
+    """Makes OUTDIR if need be and checks that files can be written in it;
+    a BatchError says why not."""
+    try:
+        os.makedirs(outdir, exist_ok=True)
+    except OSError as e:
+        raise BatchError("%s: cannot make the output folder: %s" % (outdir, e.strerror or e))
+    if not os.path.isdir(outdir):
+        raise BatchError("%s: not a folder" % outdir)
+    probe = os.path.join(outdir, ".ctrack-batch.%d.probe" % os.getpid())
+    try:
+        with open(probe, "w"):
+            pass
+        os.remove(probe)
+    except OSError as e:
+        raise BatchError("%s: cannot write in the output folder: %s"
+                         % (outdir, e.strerror or e))
 
 
 def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force=False,
@@ -372,28 +502,46 @@ def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force
     progress: None (on a terminal), True or False; prime: a look-ahead for
     recorded files, the seconds of each video a tracker that reads a
     background learns it from first (default 0: online; 3,
-    ctrack.PRIME_SECONDS, is a usual length)."""
+    ctrack.PRIME_SECONDS, is a usual length). A KeyboardInterrupt stops the
+    run (queued inputs cancelled, running ones stopped, their partial files
+    removed), writes summary.csv with them "interrupted", and is raised
+    again."""
     jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
     if prime is not None:
         if not (isinstance(prime, (int, float)) and math.isfinite(prime) and prime >= 0):
             raise BatchError("prime: %r is not a duration in seconds" % (prime,))
         for j in jobs:
             j["prime"] = float(prime)
-    os.makedirs(outdir, exist_ok=True)
-    if ray:
-        tasks = _ray_tasks(jobs, outdir, params, library, force, ray, workers)
-    else:
-        tasks = _local_tasks(jobs, outdir, params, library, force, workers)
+    _check_outdir(outdir)
+    args = (params, library, force)
+    runner = _Ray(jobs, outdir, args, ray, workers) if ray else _Pool(jobs, outdir, args, workers)
     prog = _Progress(len(jobs), enabled=progress)
     order = {j["input"]: i for i, j in enumerate(jobs)}
     rows = []
-    for row in tasks:
+
+    def record(row):
         rows.append(row)
         rows.sort(key=lambda r: order[r["input"]])
         _write_summary(outdir, rows)
         prog.update(row, final=len(rows) == len(jobs))
-    if not jobs:
-        _write_summary(outdir, rows)
+
+    try:
+        for row in runner.results():
+            record(row)
+    except KeyboardInterrupt:
+        for row in runner.interrupt({r["input"] for r in rows}):
+            record(row)
+        # A worker that died with its input (a Ray worker killed by the
+        # signal) leaves its partial file: none stays.
+        for j in jobs:
+            for name in os.listdir(outdir):
+                if name.startswith(".%s.txt." % j["name"]) and name.endswith(".partial"):
+                    _remove(os.path.join(outdir, name))
+        raise
+    finally:
+        runner.close()
+        if not jobs:
+            _write_summary(outdir, rows)
     return rows
 
 
@@ -463,6 +611,10 @@ def main(argv=None):
     except BatchError as e:
         print("ctrack.batch: %s" % e, file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("ctrack.batch: interrupted; summary in %s"
+              % os.path.join(a.output, "summary.csv"), file=sys.stderr)
+        return 130
     except ImportError as e:
         if a.ray:
             print("ctrack.batch: --ray needs Ray: pip install ray (%s)" % e, file=sys.stderr)

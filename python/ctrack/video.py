@@ -63,9 +63,13 @@ class Video:
     def __init__(self, path):
         self.path = path
         self._err = tempfile.TemporaryFile()
+        # A session of its own: Ctrl-C at a terminal signals the process
+        # group, and an ffmpeg that stopped on it would end the video early
+        # as if it were complete; its reader decides when to stop it.
         self._p = subprocess.Popen(["ffmpeg", "-v", "error", "-nostdin", "-i", path, "-f",
                                     "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
-                                   stdout=subprocess.PIPE, stderr=self._err)
+                                   stdout=subprocess.PIPE, stderr=self._err,
+                                   start_new_session=True)
         header = self._p.stdout.readline().split()
         if not header or header[0] != b"YUV4MPEG2":
             self._p.wait()

@@ -137,6 +137,27 @@ else
     expect "--prime with detections alone: nothing to prime" 0 "" -- "$ct" -q --prime 2 \
         -d "$tud/det/det.txt" -o "$tmp/y4m-prime.txt" "$tmp/tud.y4m"
     same "--prime with detections: the same tracks" "$tmp/y4m-prime.txt" "$tmp/y4m.txt"
+    # An output that is an input, or another output, is refused before
+    # anything is written: the input stays whole.
+    cp "$tmp/tud.y4m" "$tmp/self.y4m"
+    size_before=$(stat -c %s "$tmp/self.y4m")
+    expect "-o INPUT INPUT refused" 1 "would overwrite it" -- "$ct" -q -o "$tmp/self.y4m" \
+        "$tmp/self.y4m"
+    [ "$(stat -c %s "$tmp/self.y4m")" = "$size_before" ] && ok "-o INPUT INPUT: the input whole" \
+        || bad "-o INPUT INPUT: the input whole" "$(stat -c %s "$tmp/self.y4m") bytes"
+    ln -sf "$tmp/self.y4m" "$tmp/link.y4m"
+    expect "--overlay through a link to the input refused" 1 "--overlay" -- "$ct" -q \
+        --overlay "$tmp/link.y4m" "$tmp/self.y4m"
+    expect "-o into the input read from standard input refused" 1 "INPUT '-'" -- \
+        sh -c "'$ct' -q -o '$tmp/self.y4m' - < '$tmp/self.y4m'"
+    [ "$(stat -c %s "$tmp/self.y4m")" = "$size_before" ] && ok "the input whole after all" \
+        || bad "the input whole after all" "$(stat -c %s "$tmp/self.y4m") bytes"
+    cp "$tud/det/det.txt" "$tmp/det-self.txt"
+    expect "-o into the detections refused" 1 "--detections" -- "$ct" -q -d "$tmp/det-self.txt" \
+        -s 640x480 -o "$tmp/det-self.txt"
+    same "the detections whole" "$tmp/det-self.txt" "$tud/det/det.txt"
+    expect "--candidates onto -o refused" 1 "--candidates" -- "$ct" -q -o "$tmp/both.txt" \
+        --candidates "$tmp/./both.txt" "$tmp/tud.y4m"
     # A frame cut short inside the primed seconds: the frames before it are
     # tracked and written, and the error comes where it does online.
     expect "truncated y4m, pixels only, primed" 1 "truncated frame 71" -- "$ct" -q --prime 3 \

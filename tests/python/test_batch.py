@@ -278,3 +278,110 @@ def test_on_ray(tmp_path, expected):
         assert os.getpid() not in pids
     finally:
         ray.shutdown()
+
+
+@pytest.fixture(scope="module")
+def long_videos(tmp_path_factory):
+    """Six inputs of some seconds' work each: TUD-Campus looped eight times
+    (568 frames), by six names."""
+    d = tmp_path_factory.mktemp("long")
+    first = str(d / "v0.y4m")
+    subprocess.run(["ffmpeg", "-v", "error", "-stream_loop", "7", "-i",
+                    os.path.join(DATA, "TUD-Campus", "video.mp4"), "-f", "yuv4mpegpipe",
+                    "-pix_fmt", "yuv420p", first], check=True)
+    paths = [first]
+    for i in range(1, 6):
+        paths.append(str(d / ("v%d.y4m" % i)))
+        os.link(first, paths[-1])
+    return paths
+
+
+# The batch's main on a local Ray started as start_ray() starts it (so that
+# under make sanitize Ray's servers run without the sanitizers' runtimes).
+RAY_MAIN = """
+import sys
+import ray
+from ctrack import batch
+from test_batch import start_ray
+start_ray(ray)
+sys.exit(batch.main(sys.argv[1:]))
+"""
+
+
+def interrupt_batch(tmp_path, videos, to_group, ray=False, grace=5.0):
+    """Runs python -m ctrack.batch over the videos (on two workers, or on a
+    local Ray), sends SIGINT (to its process group, as a terminal's Ctrl-C
+    does, or to it alone) once an input is being written, and returns (exit
+    status, seconds from the signal to the exit, the output folder's files,
+    its standard error)."""
+    import signal
+    import time
+    out = tmp_path / "out"
+    args = ["-q", "-o", str(out)] + (["--ray", "auto"] if ray else ["-j", "2"]) + list(videos)
+    cmd = [sys.executable, "-c", RAY_MAIN] if ray else [sys.executable, "-m", "ctrack.batch"]
+    e = env()
+    e["PYTHONPATH"] += os.pathsep + os.path.dirname(os.path.abspath(__file__))
+    p = subprocess.Popen(cmd + args, env=e, start_new_session=True, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < 120:
+        if out.is_dir() and any(n.endswith(".partial") for n in os.listdir(out)):
+            break
+        if p.poll() is not None:
+            raise AssertionError("the batch ended before it was interrupted: %s"
+                                 % p.stderr.read())
+        time.sleep(0.05)
+    signaled = time.monotonic()
+    if to_group:
+        os.killpg(p.pid, signal.SIGINT)
+    else:
+        p.send_signal(signal.SIGINT)
+    try:
+        p.wait(timeout=grace + 30)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+    return p.returncode, time.monotonic() - signaled, sorted(os.listdir(out)), p.stderr.read()
+
+
+@pytest.mark.parametrize("to_group", [True, False], ids=["to the group", "to the main process"])
+def test_ctrl_c_stops_the_run_cleanly(tmp_path, long_videos, to_group):
+    """Ctrl-C: exit status 130 within 5 s, queued inputs cancelled, running
+    ones stopped, no partial file left, and summary.csv with a row for every
+    input, those not done "interrupted"."""
+    status, seconds, files, err = interrupt_batch(tmp_path, long_videos, to_group)
+    assert status == 130, err
+    assert seconds < 5.0, "%.1f s from the signal to the exit" % seconds
+    assert not [f for f in files if f.endswith(".partial")], files
+    rows = list(summary(str(tmp_path / "out")).values())
+    assert len(rows) == len(long_videos)
+    interrupted = [r for r in rows if r["status"] == "interrupted"]
+    assert len(interrupted) >= 4, rows  # two workers: at most two had finished
+    for r in rows:
+        assert r["status"] in ("ok", "interrupted"), r
+        assert (os.path.basename(r["output"]) in files) == (r["status"] == "ok"), (r, files)
+
+
+def test_ctrl_c_on_ray(tmp_path, long_videos):
+    """The same on Ray: exit status 130 within 15 s, no partial file."""
+    status, seconds, files, err = interrupt_batch(tmp_path, long_videos[:4], True, ray=True,
+                                                  grace=15.0)
+    assert status == 130, err
+    assert seconds < 15.0, "%.1f s from the signal to the exit" % seconds
+    assert not [f for f in files if f.endswith(".partial")], files
+    rows = list(summary(str(tmp_path / "out")).values())
+    assert len(rows) == 4 and any(r["status"] == "interrupted" for r in rows), rows
+
+
+def test_a_bad_output_folder_is_one_line(tmp_path):
+    """An output folder that is a file, or that cannot be written in: one
+    line, exit status 2, no traceback, nothing tracked."""
+    det = os.path.join(DATA, "TUD-Campus", "det", "det.txt")
+    afile = tmp_path / "a-file"
+    afile.write_text("x")
+    for outdir in (str(afile), str(afile / "below"), "/proc/1"):
+        r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "-o", outdir, det],
+                           capture_output=True, text=True, env=env())
+        assert r.returncode == 2, (outdir, r.stderr)
+        assert r.stderr.count("\n") == 1 and "Traceback" not in r.stderr, r.stderr
+        assert r.stderr.startswith("ctrack.batch: %s" % outdir), r.stderr
