@@ -11,6 +11,7 @@
 
 #include "ctrack/ctrack.h"
 #include "detfile.h"
+#include "detstream.h"
 #include "mot.h"
 #include "options.h"
 #include "overlay.h"
@@ -21,6 +22,8 @@
 typedef struct run {
     const options *o;
     det_file df;
+    det_stream *ds; /* -d names a stream (a FIFO, a pipe): read frame by frame */
+    int flush;      /* each frame's lines written out as it is tracked */
     video_input *in;
     ct_tracker *tracker;
     FILE *out, *cand_out;
@@ -148,7 +151,12 @@ static int open_run(run *r)
     char msg[512];
     if (outputs_are_not_inputs(o) < 0)
         return -1;
-    if (o->det_path && detfile_load(o->det_path, &r->df, msg, sizeof msg) < 0) {
+    if (o->det_path && detstream_is_stream(o->det_path)) {
+        if (detstream_open(o->det_path, &r->ds, msg, sizeof msg) < 0) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            return -1;
+        }
+    } else if (o->det_path && detfile_load(o->det_path, &r->df, msg, sizeof msg) < 0) {
         fprintf(stderr, "ct-track: %s\n", msg);
         return -1;
     }
@@ -179,7 +187,9 @@ static int open_run(run *r)
             return -1;
         }
     } else {
-        r->frames = r->df.max_frame;
+        /* Detections alone: as many frames as they name (a stream: until it
+         * ends). */
+        r->frames = r->ds ? -1 : r->df.max_frame;
     }
     if (ct_tracker_create(&o->cfg, &r->tracker) != CT_OK) {
         fprintf(stderr, "ct-track: cannot create the tracker\n");
@@ -199,6 +209,11 @@ static int open_run(run *r)
         fprintf(stderr, "ct-track: cannot write '%s': %s\n", o->out_path, strerror(errno));
         return -1;
     }
+    /* Live use: a pipe, a FIFO or a terminal gets each frame's lines as it
+     * is tracked, not when a block fills. */
+    struct stat st;
+    r->flush = o->flush || isatty(fileno(r->out)) ||
+               (fstat(fileno(r->out), &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)));
     if (o->overlay_path) {
         r->overlay = open_overlay(r, msg, sizeof msg);
         if (!r->overlay) {
@@ -228,7 +243,7 @@ static int next_frame(run *r, long long k, ct_frame *frame, ct_frame *picture)
             memset(frame->strides, 0, sizeof frame->strides);
         }
     } else {
-        if (k > r->frames)
+        if (r->frames >= 0 && k > r->frames)
             return 0;
         ct_frame_default(frame, sizeof *frame);
         frame->width = r->width;
@@ -277,11 +292,32 @@ static int get_all(const run *r, long long k, getter get, size_t elem, void **bu
 }
 
 /* One frame through the tracker and into every output. */
-static int track_frame(run *r, long long k, const ct_frame *frame, const ct_frame *picture)
+/* Frame k's detections (none without -d): from the file, or waited for on
+ * the stream. Returns 1, 0 when a stream of detections alone has ended (no
+ * frame k), -1 on an error (printed). */
+static int detections_of(run *r, long long k, const ct_detection **dets, size_t *n)
+{
+    *dets = NULL;
+    *n = 0;
+    if (!r->o->det_path)
+        return 1;
+    if (!r->ds) {
+        *dets = detfile_frame(&r->df, (int)k, n);
+        return 1;
+    }
+    char msg[512];
+    const int got = detstream_frame(r->ds, k, dets, n, msg, sizeof msg);
+    if (got < 0)
+        fprintf(stderr, "ct-track: %s\n", msg);
+    /* With a video, a stream that ended leaves the frames after it without
+     * detections. */
+    return got == 0 && r->in ? 1 : got;
+}
+
+static int track_frame(run *r, long long k, const ct_frame *frame, const ct_frame *picture,
+                       const ct_detection *dets, size_t n)
 {
     const options *o = r->o;
-    size_t n = 0;
-    const ct_detection *dets = o->det_path ? detfile_frame(&r->df, (int)k, &n) : NULL;
     const int st = ct_tracker_feed(r->tracker, frame, dets, n);
     if (st != CT_OK) {
         fprintf(stderr, "ct-track: frame %lld: %s: %s\n", k, ct_status_str(st),
@@ -314,6 +350,10 @@ static int track_frame(run *r, long long k, const ct_frame *frame, const ct_fram
         fprintf(stderr, "ct-track: %s\n", msg);
         return -1;
     }
+    if (r->flush && (fflush(r->out) != 0 || (r->cand_out && fflush(r->cand_out) != 0))) {
+        fprintf(stderr, "ct-track: error writing the tracks: %s\n", strerror(errno));
+        return -1;
+    }
     return 0;
 }
 
@@ -340,6 +380,7 @@ static int close_run(run *r, int rc)
     ct_tracker_destroy(r->tracker);
     video_close(r->in);
     detfile_free(&r->df);
+    detstream_close(r->ds);
     return rc;
 }
 
@@ -423,17 +464,25 @@ static int track_all(run *r)
             return EXIT_RUNTIME;
         if (got == 0)
             break;
+        const ct_detection *dets;
+        size_t n;
+        const int have = detections_of(r, k + 1, &dets, &n);
+        if (have < 0)
+            return EXIT_RUNTIME;
+        if (have == 0)
+            break;
         k++;
-        if (track_frame(r, k, &frame, &picture) < 0)
+        if (track_frame(r, k, &frame, &picture, dets, n) < 0)
             return EXIT_RUNTIME;
         progress_update(&pr, k);
     }
     progress_end(&pr, k);
     if (o->stats)
         print_stats(r->tracker);
-    if (o->det_path && r->df.max_frame > k)
-        fprintf(stderr, "ct-track: warning: detections go to frame %d, the video has %lld\n",
-                r->df.max_frame, k);
+    const long long last = r->ds ? detstream_last_frame(r->ds) : r->df.max_frame;
+    if (o->det_path && last > k)
+        fprintf(stderr, "ct-track: warning: detections go to frame %lld, the video has %lld\n",
+                last, k);
     if (fflush(r->out) != 0 || ferror(r->out)) {
         fprintf(stderr, "ct-track: error writing the tracks: %s\n", strerror(errno));
         return EXIT_RUNTIME;

@@ -78,6 +78,10 @@ static void usage(FILE *out)
             "  -d, --detections FILE  MOTChallenge detections (frame,-1,left,top,w,h,score,...),\n"
             "                         frames 1-based. Without INPUT: detections only. Without\n"
             "                         this option ct-track finds people in the pixels itself.\n"
+            "                         A FIFO, a pipe or '-' (standard input, when INPUT is a\n"
+            "                         file) is read frame by frame as a live detector writes\n"
+            "                         it: frame k's detections are complete at a line of a\n"
+            "                         later frame, at a line holding only k, or at its end\n"
             "  -s, --size WxH         raw video size; with detections only, the image size\n"
             "  -f, --format FMT       raw video format: i420 (default), nv12, gray\n"
             "  -r, --fps RATE         frame rate (default 25; a Y4M header's rate unless given)\n"
@@ -91,6 +95,8 @@ static void usage(FILE *out)
             "                         online, as a camera; %g is a usual length). The\n"
             "                         frames are kept in memory (512 MiB at most)\n"
             "  -o, --output FILE      write tracks to FILE (default: standard output)\n"
+            "      --flush            write each frame's tracks as soon as it is tracked (the\n"
+            "                         default when the output is a pipe, a FIFO or a terminal)\n"
             "      --overlay FILE     also write the frames as Y4M with boxes, ids and trails\n"
             "                         drawn (grey frames with detections only)\n"
             "      --overlay-candidates  also draw the blobs found in the pixels (or the\n"
@@ -198,6 +204,12 @@ static int check_combination(options *o)
                 o->overlay_candidates ? "candidates" : "size");
         return EXIT_USAGE;
     }
+    if (o->det_path && !strcmp(o->det_path, "-") && o->input_path &&
+        !strcmp(o->input_path, "-")) {
+        fprintf(stderr, "ct-track: --detections - and the video cannot both be standard "
+                        "input; give the detections a FIFO\n");
+        return EXIT_USAGE;
+    }
     if (o->overlay_path && !strcmp(o->overlay_path, "-") &&
         (!o->out_path || !strcmp(o->out_path, "-"))) {
         fprintf(stderr, "ct-track: --overlay - and the tracks cannot both go to standard "
@@ -222,7 +234,7 @@ int options_parse(int argc, char **argv, options *o)
 
     enum {
         OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
-        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE, OPT_PRIME
+        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE, OPT_PRIME, OPT_FLUSH
     };
     static const struct option longopts[] = {
         {"detections", required_argument, NULL, 'd'},
@@ -232,6 +244,7 @@ int options_parse(int argc, char **argv, options *o)
         {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
         {"prime", required_argument, NULL, OPT_PRIME},
         {"output", required_argument, NULL, 'o'},
+        {"flush", no_argument, NULL, OPT_FLUSH},
         {"overlay", required_argument, NULL, OPT_OVERLAY},
         {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
         {"overlay-size", no_argument, NULL, OPT_OVERLAY_SIZE},
@@ -280,6 +293,7 @@ int options_parse(int argc, char **argv, options *o)
             }
             break;
         case 'o': o->out_path = optarg; break;
+        case OPT_FLUSH: o->flush = 1; break;
         case OPT_OVERLAY: o->overlay_path = optarg; break;
         case OPT_OVERLAY_CANDIDATES: o->overlay_candidates = 1; break;
         case OPT_OVERLAY_SIZE: o->overlay_size = 1; break;

@@ -19,6 +19,7 @@ typedef struct options {
     double fps;              /* --fps, 0 when not given */
     double prime;            /* --prime, seconds */
     int no_pixels, progress, stats, overlay_candidates, overlay_size;
+    int flush;               /* --flush: each frame's lines out as it is tracked */
 } options;
 
 /* Reads the command line into *o. Returns -1 when ct-track should run, or

@@ -296,7 +296,15 @@ expect "empty detections" 0 "" -- "$ct" -q -d "$tmp/empty.txt" -s 640x480
 # --- options ---------------------------------------------------------------
 expect "no arguments" 2 "usage" -- "$ct"
 expect "no pixels and no detections" 2 "--no-pixels needs --detections" -- "$ct" --no-pixels "$tmp/tiny.y4m"
-expect "an mp4 is not a video ct-track reads" 1 "is not Y4M" -- "$ct" "$tud/video.mp4"
+expect "an mp4 is answered with the ffmpeg command" 1 "ffmpeg -i '$tud/video.mp4' -f yuv4mpegpipe -pix_fmt yuv420p - | ct-track" -- "$ct" "$tud/video.mp4"
+expect "an mp4 on standard input too" 1 "standard input holds an MP4" -- sh -c "'$ct' - < '$tud/video.mp4'"
+expect "an mp4 with --size too" 1 "holds an MP4" -- "$ct" -s 640x480 "$tud/video.mp4"
+ffmpeg -v error -i "$tud/video.mp4" -frames:v 2 "$tmp/clip.avi" "$tmp/clip.mkv"
+expect "an avi" 1 "holds an AVI file" -- "$ct" "$tmp/clip.avi"
+expect "a matroska file" 1 "holds a Matroska" -- "$ct" "$tmp/clip.mkv"
+cp "$tmp/tud.i420" "$tmp/raw.ts"
+expect "a .ts without --size: an encoded video" 1 "ffmpeg -i" -- "$ct" "$tmp/raw.ts"
+expect "a .ts with --size: raw" 0 "" -- "$ct" -q -s 640x480 -o /dev/null "$tmp/raw.ts"
 expect "two inputs" 2 "one INPUT" -- "$ct" -d "$tud/det/det.txt" a b
 expect "size 0x0" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 0x0
 expect "absurd size" 2 "--size" -- "$ct" -d "$tud/det/det.txt" -s 100000x10

@@ -49,11 +49,8 @@ static int parse_fields(const char *line, double *v, int max)
     }
 }
 
-/* Parses one line of a detections file (its end of line stripped): 1 and
- * the detection in *frame and *det, 0 for a blank or comment line, -1 with
- * "FILE:LINE: what" in err. */
-static int parse_line(const char *line, size_t len, const char *path, size_t lineno,
-                      int *frame, ct_detection *det, char *err, size_t err_len)
+int detfile_parse_line(const char *line, size_t len, const char *path, size_t lineno,
+                       int *frame, ct_detection *det, char *err, size_t err_len)
 {
     if (memchr(line, '\0', len)) {
         snprintf(err, err_len, "%s:%zu: a NUL byte in the line (is it a text file?)", path,
@@ -137,7 +134,8 @@ int detfile_load(const char *path, det_file *out, char *err, size_t err_len)
             line[--len] = '\0';
         int frame;
         ct_detection det;
-        const int got = parse_line(line, (size_t)len, path, lineno, &frame, &det, err, err_len);
+        const int got =
+            detfile_parse_line(line, (size_t)len, path, lineno, &frame, &det, err, err_len);
         if (got < 0)
             goto out;
         if (got == 0)

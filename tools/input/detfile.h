@@ -29,6 +29,12 @@ typedef struct det_file {
  * error. Returns 0, or -1 with "FILE:LINE: what" in err. */
 int detfile_load(const char *path, det_file *out, char *err, size_t err_len);
 
+/* Parses one line of a detections file (its end of line stripped): 1 and
+ * the detection in *frame and *det, 0 for a blank or comment line, -1 with
+ * "FILE:LINE: what" in err. */
+int detfile_parse_line(const char *line, size_t len, const char *path, size_t lineno,
+                       int *frame, ct_detection *det, char *err, size_t err_len);
+
 /* The detections of `frame` (frames must be asked in increasing order). */
 const ct_detection *detfile_frame(det_file *df, int frame, size_t *n);
 

@@ -6,9 +6,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 #define Y4M_SIGNATURE "YUV4MPEG2 "
+/* The bytes read before deciding what the input is: Y4M's signature, or a
+ * container's magic (an AVI's is at bytes 8-11). */
+#define SNIFF_BYTES 12
 #define Y4M_MAX_LINE 1024
 #define MAX_SIDE 16384
 
@@ -79,6 +83,49 @@ static long read_line(video_input *in, char *line, size_t max)
     }
     line[n] = '\0';
     return (long)n;
+}
+
+/* The container the first bytes of a file announce, or NULL: files ffmpeg
+ * decodes that are neither raw video nor Y4M. */
+static const char *container_of(const unsigned char *b, size_t n)
+{
+    static const struct {
+        size_t at, len;
+        const char *magic, *name;
+    } kinds[] = {
+        {4, 4, "ftyp", "an MP4 or QuickTime (MOV)"},
+        {8, 4, "AVI ", "an AVI"},
+        {0, 4, "\x1a\x45\xdf\xa3", "a Matroska or WebM"},
+        {0, 4, "OggS", "an Ogg"},
+        {0, 3, "FLV", "a Flash (FLV)"},
+        {0, 4, "\x30\x26\xb2\x75", "an ASF or WMV"},
+        {0, 4, "\x00\x00\x01\xba", "an MPEG program stream"},
+        {0, 4, "\x89PNG", "a PNG"},
+        {0, 3, "\xff\xd8\xff", "a JPEG"},
+        {0, 4, "GIF8", "a GIF"},
+    };
+    for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++)
+        if (n >= kinds[i].at + kinds[i].len &&
+            !memcmp(b + kinds[i].at, kinds[i].magic, kinds[i].len))
+            return kinds[i].name;
+    return NULL;
+}
+
+/* Whether a file's name ends as an encoded video's does (a transport
+ * stream, an elementary stream: no magic in their first bytes). */
+static int video_extension(const char *path)
+{
+    static const char *const ext[] = {".ts", ".mts", ".m2ts", ".mpg", ".mpeg", ".h264",
+                                      ".h265", ".hevc", ".264", ".265", ".mjpeg", ".mxf",
+                                      ".3gp", ".mp4", ".mov", ".mkv", ".webm", ".avi",
+                                      ".m4v", ".ogv", ".flv", ".wmv"};
+    const char *dot = strrchr(path, '.');
+    if (!dot || strchr(dot, '/'))
+        return 0;
+    for (size_t i = 0; i < sizeof ext / sizeof ext[0]; i++)
+        if (!strcasecmp(dot, ext[i]))
+            return 1;
+    return 0;
 }
 
 /* A decimal number in [lo, hi] that fills the whole of s, or -1. */
@@ -204,13 +251,13 @@ int video_open(const char *path, const video_params *params, video_input **out,
         }
     }
 
-    in->pending_len = fread(in->pending, 1, strlen(Y4M_SIGNATURE), in->f);
+    in->pending_len = fread(in->pending, 1, SNIFF_BYTES, in->f);
     if (ferror(in->f)) {
         snprintf(err, err_len, "cannot read '%s': %s", path, strerror(errno));
         video_close(in);
         return -1;
     }
-    in->y4m = in->pending_len == strlen(Y4M_SIGNATURE) &&
+    in->y4m = in->pending_len >= strlen(Y4M_SIGNATURE) &&
               !memcmp(in->pending, Y4M_SIGNATURE, strlen(Y4M_SIGNATURE));
     if (in->y4m) {
         /* Keep the space so the tokenizer sees " W640 ..." after it. */
@@ -220,6 +267,21 @@ int video_open(const char *path, const video_params *params, video_input **out,
             return -1;
         }
     } else {
+        const char *container = container_of(in->pending, in->pending_len);
+        if (!container && !is_stdin && (params->width <= 0 || params->height <= 0) &&
+            video_extension(path))
+            container = "an encoded video";
+        if (container) {
+            const char *name = is_stdin ? "FILE" : path;
+            snprintf(err, err_len,
+                     "%s%s%s holds %s file, which ct-track does not decode (it reads Y4M "
+                     "and raw video): pipe it through ffmpeg as Y4M, e.g.\n"
+                     "  ffmpeg -i '%s' -f yuv4mpegpipe -pix_fmt yuv420p - | ct-track [OPTIONS] -",
+                     is_stdin ? "" : "'", is_stdin ? "standard input" : path,
+                     is_stdin ? "" : "'", container, name);
+            video_close(in);
+            return -1;
+        }
         if (params->width <= 0 || params->height <= 0) {
             snprintf(err, err_len,
                      "'%s' is not Y4M: give the raw video's size with --size WxH", path);
