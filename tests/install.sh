@@ -32,18 +32,39 @@ lines=$(wc -l < "$tmp/a.txt")
 # runpath), whatever the prefix.
 env -u LD_LIBRARY_PATH "$root/bin/ct-track" --version > /dev/null ||
     { echo "install: the installed ct-track does not find the installed library"; exit 1; }
-# The Python package, installed into the site folder of the python3 that
-# configured the build: imported from there (not from the source tree), it
-# loads the installed library and tracks as the installed ct-track does.
-init=$(find "$root" -path '*/ctrack/__init__.py' | head -n 1)
+# The README's C example, as a user copies it, built against the install.
+awk '/^```c$/ { on = 1; next } on && /^```$/ { exit } on' "$src/README.md" > "$tmp/readme.c"
+cc -std=c99 -Wall -Wextra -Werror "$tmp/readme.c" $(pkg-config --cflags --libs ctrack) \
+    -o "$tmp/readme"
+LD_LIBRARY_PATH=$libdir "$tmp/readme" 25 < "$det" > "$tmp/readme.txt"
+[ "$(wc -l < "$tmp/readme.txt")" -gt 200 ] ||
+    { echo "install: README's example tracked $(wc -l < "$tmp/readme.txt") lines"; exit 1; }
+# The Python package, every module of it, installed where the python3 that
+# configured the build imports it from (scripts/python-site.py): imported
+# from there (not from the source tree), it loads the installed library and
+# tracks as the installed ct-track does; python -m ctrack.batch and
+# ctrack.video work.
+init=$(find "$tmp" -path '*/ctrack/__init__.py' | head -n 1)
 [ -n "$init" ] || { echo "install: no Python package installed"; exit 1; }
 site=$(dirname "$(dirname "$init")")
+for m in "$src"/python/ctrack/*.py; do
+    [ -f "$site/ctrack/$(basename "$m")" ] ||
+        { echo "install: python/ctrack/$(basename "$m") not installed"; exit 1; }
+done
+configured=$(meson introspect "$build" --buildoptions | python3 -c \
+    'import json,sys; print(next(o["value"] for o in json.load(sys.stdin) if o["name"]=="prefix"))')
+want=$(python3 "$src/scripts/python-site.py" "$configured")
+[ "$site" = "$tmp$want" ] || { echo "install: the package went to $site, not $tmp$want"; exit 1; }
+python3 -c 'import sys; sys.exit(0 if sys.argv[1] in sys.path else 1)' "$want" ||
+    python3 -c 'import sys, sysconfig; sys.exit(0 if sys.argv[1] == sysconfig.get_path("purelib") else 1)' "$want" ||
+    { echo "install: python3 does not import from $want"; exit 1; }
 "$root/bin/ct-track" -q -d "$det" -r 25 > "$tmp/ct.txt"
 py=$("$src/scripts/venv.sh")
 cat > "$tmp/track.py" <<'END'
 import sys
 import numpy as np
 import ctrack
+import ctrack.video  # noqa: F401 (installed too)
 assert ctrack.__file__.startswith(sys.argv[2]), ctrack.__file__
 d = np.loadtxt(sys.argv[1], delimiter=",", ndmin=2)
 with ctrack.Tracker(fps=25) as t:
@@ -54,4 +75,8 @@ END
 (cd "$tmp" && env -u CTRACK_LIBRARY PYTHONPATH="$site" LD_LIBRARY_PATH="$libdir" \
     "$py" track.py "$det" "$site" > py.txt)
 cmp "$tmp/ct.txt" "$tmp/py.txt" || { echo "install: the installed Python package and ct-track differ"; exit 1; }
-echo "install: header, ct-track, ctrack.pc, the Python package; the shared and static builds and Python agree ($lines lines)"
+(cd "$tmp" && env -u CTRACK_LIBRARY PYTHONPATH="$site" LD_LIBRARY_PATH="$libdir" \
+    "$py" -m ctrack.batch --help > batch-help.txt) ||
+    { echo "install: python -m ctrack.batch --help failed from the install"; exit 1; }
+grep -q "OUTDIR" "$tmp/batch-help.txt" || { echo "install: ctrack.batch's help lacks OUTDIR"; exit 1; }
+echo "install: header, ct-track, ctrack.pc, the Python package (every module); the shared and static builds, README's example and Python agree ($lines lines)"

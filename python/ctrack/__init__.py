@@ -32,7 +32,7 @@ from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
                    PRIME_SECONDS, PRIME_MAX_FRAMES, PRIME_MAX_BYTES)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
-           "mot_lines", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS",
+           "mot_lines", "from_xyxy", "draw", "Trails", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS",
            "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "PRIME_SECONDS", "PRIME_MAX_FRAMES",
            "PRIME_MAX_BYTES", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
 
@@ -124,6 +124,34 @@ def mot_lines(frame, tracks):
     return ["%d,%d,%.2f,%.2f,%.2f,%.2f,%.3f,-1,-1,-1"
             % (frame, t["id"], t["left"], t["top"], t["width"], t["height"], t["confidence"])
             for t in tracks]
+
+
+def from_xyxy(boxes):
+    """Detections given by their corners, [x1, y1, x2, y2, score(, class)]
+    a row (as supervision, YOLO and torchvision give them), as feed() takes
+    them: [left, top, width, height, score(, class)]."""
+    b = np.asarray(boxes, dtype=np.float64)
+    if b.size == 0:
+        return np.zeros((0, 5))
+    if b.ndim != 2 or b.shape[1] not in (5, 6):
+        raise ValueError("boxes: shape %s is not (N, 5) or (N, 6) "
+                         "[x1, y1, x2, y2, score(, class)]" % (b.shape,))
+    out = b.copy()
+    out[:, 2] = b[:, 2] - b[:, 0]
+    out[:, 3] = b[:, 3] - b[:, 1]
+    return out
+
+
+def _from_supervision(d):
+    """A supervision.Detections (xyxy, confidence, class_id) as feed()'s
+    rows; a missing confidence is 1."""
+    xyxy = np.asarray(d.xyxy, dtype=np.float64).reshape(-1, 4)
+    conf = (np.ones(len(xyxy)) if getattr(d, "confidence", None) is None
+            else np.asarray(d.confidence, dtype=np.float64).reshape(-1))
+    cols = [xyxy, conf[:, None]]
+    if getattr(d, "class_id", None) is not None:
+        cols.append(np.asarray(d.class_id, dtype=np.float64).reshape(-1, 1))
+    return from_xyxy(np.hstack(cols))
 
 
 def _status_error(lib, status, message):
@@ -311,8 +339,10 @@ class Tracker:
             bgr_to_i420 does (in C, from ctrack 0.8.0; with an older library
             this package converts it with numpy, and a step at 768x576 takes
             some 20 times longer).
-        detections: None or an (N, 5) / (N, 6) array of
-            [left, top, width, height, score(, class)] in pixels.
+        detections: None, an (N, 5) / (N, 6) array of
+            [left, top, width, height, score(, class)] in pixels, or a
+            supervision.Detections (its xyxy, confidence and class_id);
+            from_xyxy() converts [x1, y1, x2, y2, score(, class)] rows.
         timestamp: seconds; None means one frame period (1 / fps) after the
             last.
         """
@@ -488,6 +518,8 @@ class Tracker:
     def _detections(detections):
         if detections is None:
             return np.zeros(0, _DET_DTYPE)
+        if hasattr(detections, "xyxy"):  # a supervision.Detections
+            detections = _from_supervision(detections)
         d = np.asarray(detections, dtype=np.float64)
         if d.size == 0:
             return np.zeros(0, _DET_DTYPE)
@@ -503,3 +535,6 @@ class Tracker:
                 raise ValueError("detections: the class column must hold whole numbers")
             out["class_id"] = cls.astype(np.int32)
         return out
+
+
+from .draw import Trails, draw  # noqa: E402 (draw imports _abi only)

@@ -38,3 +38,13 @@ def test_pip_installs_the_package(tmp_path):
     out = subprocess.run([sys.executable, "-c", CHECK, str(site)], cwd=str(tmp_path), env=env,
                          check=True, capture_output=True, text=True).stdout
     assert out.strip() == ctrack.__version__
+
+
+def test_make_install_lists_every_module():
+    """meson.build installs the package's modules by name: every module of
+    python/ctrack is in the list (tests/install.sh checks they arrive)."""
+    import re
+    with open(os.path.join(TOP, "meson.build")) as f:
+        listed = set(re.findall(r"'python/ctrack/([a-z_]+\.py)'", f.read()))
+    here = {m for m in os.listdir(os.path.join(TOP, "python", "ctrack")) if m.endswith(".py")}
+    assert listed == here
