@@ -17,12 +17,13 @@ import tempfile
 
 import numpy as np
 
-from cteval import peers
+from cteval import counting, peers
 from cteval.data import (CONDITIONS, DATA, TOP, conditioned, ctrack_version,
                          has_video, load_dets, run_ctrack, seqinfo, sequences, subsampled, video,
                          write_rows)
 from cteval.families import FAMILIES, RATE_STEPS, run_all
 from cteval.score import score, score_overall
+from cteval.y4m import i420_planes, open_y4m
 
 
 def trackeval_scores(seqs, trackers_dir, names):
@@ -113,6 +114,8 @@ def run_tracker(build, key, seq, info, y4m, dets, path):
     n, fps = info["frames"], info["fps"]
     if key in CTRACK_RUNS:
         pixels, detections, params = CTRACK_RUNS[key]
+        if seq in counting.LINES:  # the tracks are the same with counting on
+            params = params + counting.ct_track_args(seq, counting.events_path(path, seq))
         return run_ctrack(build, seq, info, y4m, path, pixels=pixels, detections=detections,
                           params=params)
     if key in PEERS_ON_DETECTIONS:
@@ -178,10 +181,12 @@ def main():
         r.update({"key": key, "tracker": label, "input": mode,
                   "HOTA": te[(key, "COMBINED_SEQ")]["HOTA"]})
         overall.append(r)
-    write_report(a.out, results, seqs, worst, lower, overall, conditions, families)
+    counts = counting.evaluate(tmp, DATA, has_video)
+    write_report(a.out, results, seqs, worst, lower, overall, conditions, families, counts)
     with open(os.path.join(a.build, "eval.json"), "w") as f:
         json.dump({"sequences": results, "overall": overall, "lower_rates": lower,
-                   "conditions": conditions, "families": families}, f, indent=1)
+                   "conditions": conditions, "families": families, "counting": counts}, f,
+                  indent=1)
     print("eval: wrote %s/results.md, %s/img/scores.png, rates.png, conditions.png, %s/eval.json"
           % (a.out, a.out, a.build), file=sys.stderr)
 
@@ -382,7 +387,15 @@ def plot_conditions(plt, path, results, conditions):
     plt.close(fig)
 
 
-def write_report(out, results, seqs, worst, lower, overall, conditions, families):
+def first_frame(seq):
+    """A sequence's first frame in grey, or None without a video."""
+    if not has_video(seq):
+        return None
+    w, h, _, frames = open_y4m(video(seq))
+    return np.array(i420_planes(frames[0], w, h)[0])
+
+
+def write_report(out, results, seqs, worst, lower, overall, conditions, families, counts):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -414,6 +427,7 @@ def write_report(out, results, seqs, worst, lower, overall, conditions, families
     fig.savefig(os.path.join(out, "img", "scores.png"), dpi=110)
     plot_rates(plt, os.path.join(out, "img", "rates.png"), results, seqs, lower)
     plot_conditions(plt, os.path.join(out, "img", "conditions.png"), results, conditions)
+    counting.plot_lines(plt, os.path.join(out, "img", "counting-lines.png"), DATA, first_frame)
 
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("# Results\n\n")
@@ -457,6 +471,7 @@ def write_report(out, results, seqs, worst, lower, overall, conditions, families
                            r["IDsw"], r["precision"], r["recall"], r["barycenter_error"],
                            r["seconds"], r["fps"]))
             f.write("\n")
+        counting.write_report(f, counts)
         write_conditions(f, results, conditions)
         write_families(f, families)
         f.write(LOWER_RATES_HEAD)

@@ -12,6 +12,7 @@
 #include "ctrack/ctrack.h"
 #include "detfile.h"
 #include "detstream.h"
+#include "events.h"
 #include "mot.h"
 #include "options.h"
 #include "overlay.h"
@@ -26,7 +27,7 @@ typedef struct run {
     int flush;      /* each frame's lines written out as it is tracked */
     video_input *in;
     ct_tracker *tracker;
-    FILE *out, *cand_out;
+    FILE *out, *cand_out, *events_out;
     overlay_writer *overlay;
     int width, height;
     uint32_t format; /* the video's */
@@ -37,6 +38,13 @@ typedef struct run {
     size_t tracks_cap, n_tracks;
     ct_candidate *cands;
     size_t cands_cap, n_cands;
+    /* Counting (--line, --zone): this step's events, and the counts. */
+    int counting;
+    ct_event *events;
+    size_t events_cap, n_events;
+    ct_line_count lines[CT_COUNT_MAX_LINES];
+    ct_zone_count zones[CT_COUNT_MAX_ZONES];
+    size_t n_lines, n_zones;
 } run;
 
 /* The library's own timers: per stage, per frame and, for mean shift, per
@@ -125,7 +133,8 @@ static int outputs_are_not_inputs(const options *o)
     const named_file in[] = {{"INPUT", o->input_path}, {"--detections", o->det_path}};
     const named_file out[] = {{"--output", o->out_path},
                               {"--overlay", o->overlay_path},
-                              {"--candidates", o->candidates_path}};
+                              {"--candidates", o->candidates_path},
+                              {"--events", o->events_path}};
     const size_t n_in = sizeof in / sizeof in[0], n_out = sizeof out / sizeof out[0];
     for (size_t i = 0; i < n_out; i++) {
         if (!out[i].path || strcmp(out[i].path, "-") == 0)
@@ -195,6 +204,19 @@ static int open_run(run *r)
         fprintf(stderr, "ct-track: cannot create the tracker\n");
         return -1;
     }
+    r->counting = o->counting.n_lines + o->counting.n_zones > 0;
+    if (r->counting && counting_add(&o->counting, r->tracker, msg, sizeof msg) < 0) {
+        fprintf(stderr, "ct-track: %s\n", msg);
+        return -1;
+    }
+    if (o->events_path) {
+        r->events_out = strcmp(o->events_path, "-") ? fopen(o->events_path, "w") : stdout;
+        if (!r->events_out) {
+            fprintf(stderr, "ct-track: cannot write '%s': %s\n", o->events_path,
+                    strerror(errno));
+            return -1;
+        }
+    }
     if (o->candidates_path) {
         r->cand_out = fopen(o->candidates_path, "w");
         if (!r->cand_out) {
@@ -204,7 +226,7 @@ static int open_run(run *r)
         }
         mot_write_candidates_header(r->cand_out);
     }
-    r->out = o->out_path ? fopen(o->out_path, "w") : stdout;
+    r->out = o->out_path && strcmp(o->out_path, "-") ? fopen(o->out_path, "w") : stdout;
     if (!r->out) {
         fprintf(stderr, "ct-track: cannot write '%s': %s\n", o->out_path, strerror(errno));
         return -1;
@@ -220,6 +242,10 @@ static int open_run(run *r)
             fprintf(stderr, "ct-track: %s\n", msg);
             return -1;
         }
+        if (r->counting)
+            overlay_set_counting(r->overlay, o->counting.line_ends, r->lines,
+                                 o->counting.n_lines, o->counting.zone_points,
+                                 o->counting.zone_n, r->zones, o->counting.n_zones);
     }
     return 0;
 }
@@ -269,6 +295,11 @@ static int get_candidates(const ct_tracker *t, void *out, size_t cap, size_t *co
     return ct_tracker_get_candidates(t, out, cap, sizeof(ct_candidate), count);
 }
 
+static int get_events(const ct_tracker *t, void *out, size_t cap, size_t *count)
+{
+    return ct_tracker_get_events(t, out, cap, sizeof(ct_event), count);
+}
+
 static int get_all(const run *r, long long k, getter get, size_t elem, void **buf, size_t *cap,
                    size_t *count)
 {
@@ -291,7 +322,6 @@ static int get_all(const run *r, long long k, getter get, size_t elem, void **bu
     return 0;
 }
 
-/* One frame through the tracker and into every output. */
 /* Frame k's detections (none without -d): from the file, or waited for on
  * the stream. Returns 1, 0 when a stream of detections alone has ended (no
  * frame k), -1 on an error (printed). */
@@ -314,6 +344,26 @@ static int detections_of(run *r, long long k, const ct_detection **dets, size_t 
     return got == 0 && r->in ? 1 : got;
 }
 
+/* Frame k's counting: its events (written to --events) and the counts
+ * (drawn on the overlay). */
+static int count_frame(run *r, long long k, int64_t us)
+{
+    if (get_all(r, k, get_events, sizeof(ct_event), (void **)&r->events, &r->events_cap,
+                &r->n_events) < 0)
+        return -1;
+    if (ct_tracker_get_line_counts(r->tracker, r->lines, CT_COUNT_MAX_LINES,
+                                   sizeof(ct_line_count), &r->n_lines) != CT_OK ||
+        ct_tracker_get_zone_counts(r->tracker, r->zones, CT_COUNT_MAX_ZONES,
+                                   sizeof(ct_zone_count), &r->n_zones) != CT_OK) {
+        fprintf(stderr, "ct-track: frame %lld: %s\n", k, ct_tracker_last_error(r->tracker));
+        return -1;
+    }
+    if (r->events_out)
+        events_write(r->events_out, k, us * 1e-6, r->events, r->n_events, r->lines, r->zones);
+    return 0;
+}
+
+/* One frame through the tracker and into every output. */
 static int track_frame(run *r, long long k, const ct_frame *frame, const ct_frame *picture,
                        const ct_detection *dets, size_t n)
 {
@@ -334,6 +384,8 @@ static int track_frame(run *r, long long k, const ct_frame *frame, const ct_fram
         return -1;
     if (r->cand_out)
         mot_write_candidates(r->cand_out, k, r->cands, r->n_cands);
+    if (r->counting && count_frame(r, k, frame->timestamp_us) < 0)
+        return -1;
     mot_write_tracks(r->out, k, r->tracks, r->n_tracks);
     if (r->overlay && o->overlay_size) {
         ct_person_size size = {.size = sizeof size};
@@ -350,7 +402,8 @@ static int track_frame(run *r, long long k, const ct_frame *frame, const ct_fram
         fprintf(stderr, "ct-track: %s\n", msg);
         return -1;
     }
-    if (r->flush && (fflush(r->out) != 0 || (r->cand_out && fflush(r->cand_out) != 0))) {
+    if (r->flush && (fflush(r->out) != 0 || (r->cand_out && fflush(r->cand_out) != 0) ||
+                     (r->events_out && fflush(r->events_out) != 0))) {
         fprintf(stderr, "ct-track: error writing the tracks: %s\n", strerror(errno));
         return -1;
     }
@@ -375,6 +428,13 @@ static int close_run(run *r, int rc)
                 strerror(errno));
         rc = EXIT_RUNTIME;
     }
+    if (r->events_out &&
+        (r->events_out == stdout ? fflush(stdout) : fclose(r->events_out)) != 0 && rc == 0) {
+        fprintf(stderr, "ct-track: error writing '%s': %s\n", r->o->events_path,
+                strerror(errno));
+        rc = EXIT_RUNTIME;
+    }
+    free(r->events);
     free(r->cands);
     free(r->tracks);
     ct_tracker_destroy(r->tracker);
@@ -479,6 +539,8 @@ static int track_all(run *r)
     progress_end(&pr, k);
     if (o->stats)
         print_stats(r->tracker);
+    if (r->counting)
+        counts_print(stderr, "ct-track: ", r->lines, r->n_lines, r->zones, r->n_zones);
     const long long last = r->ds ? detstream_last_frame(r->ds) : r->df.max_frame;
     if (o->det_path && last > k)
         fprintf(stderr, "ct-track: warning: detections go to frame %lld, the video has %lld\n",

@@ -64,6 +64,8 @@ static void usage(FILE *out)
 {
     ct_config cfg;
     ct_config_default(&cfg, sizeof cfg);
+    ct_line default_line;
+    ct_line_default(&default_line, sizeof default_line);
     fprintf(out,
             "usage: ct-track [options] [INPUT]\n"
             "\n"
@@ -105,6 +107,18 @@ static void usage(FILE *out)
             "      --overlay-size     also draw the people's size as the tracker learns it: a\n"
             "                         person's box at a few rows on both edges of the image,\n"
             "                         and the pixels' working scale at the bottom left\n"
+            "      --line X1,Y1,X2,Y2[,NAME]  count the people who cross the segment from\n"
+            "                         (X1,Y1) to (X2,Y2) (pixels), each way: in to its right\n"
+            "                         as the image shows it (for a line drawn left to right,\n"
+            "                         downward), out the other way (repeatable, %d at most)\n"
+            "      --zone X1,Y1,X2,Y2,X3,Y3...[,NAME]  count the people who enter and leave\n"
+            "                         the polygon with these corners (3 to %d) and those in\n"
+            "                         it (repeatable, %d at most). The counts are printed at\n"
+            "                         the end, and drawn on the overlay\n"
+            "      --events FILE      write each crossing, entry and exit as a JSON line\n"
+            "      --hysteresis H     how far past a line, or into or out of a zone, in\n"
+            "                         heights of the person's box, the feet must go for a\n"
+            "                         crossing, entry or exit to count (default %g)\n"
             "  -p, --param NAME=VALUE set a tracker parameter (repeatable), see below\n"
             "      --progress         print progress on standard error (default when it is\n"
             "                         a terminal)\n"
@@ -118,7 +132,8 @@ static void usage(FILE *out)
             "  -V, --version          print the version\n"
             "\n"
             "parameters (defaults):\n",
-            CT_PRIME_SECONDS);
+            CT_PRIME_SECONDS, CT_COUNT_MAX_LINES, CT_ZONE_MAX_POINTS, CT_COUNT_MAX_ZONES,
+            (double)default_line.hysteresis);
     for (size_t i = 0; i < sizeof params / sizeof params[0]; i++) {
         fprintf(out, "  %-26s ", params[i].name);
         print_param_value(out, &cfg, &params[i]);
@@ -183,6 +198,27 @@ static int parse_size(const char *s, int *w, int *h)
     return 0;
 }
 
+/* The lines and zones, as the library checks them: on a tracker of their
+ * own, before anything is opened. */
+static int check_counting(const options *o)
+{
+    if (o->counting.n_lines + o->counting.n_zones == 0)
+        return -1;
+    ct_tracker *t = NULL;
+    char msg[600];
+    if (ct_tracker_create(&o->cfg, &t) != CT_OK) {
+        fprintf(stderr, "ct-track: cannot create the tracker\n");
+        return EXIT_RUNTIME;
+    }
+    const int bad = counting_add(&o->counting, t, msg, sizeof msg) < 0;
+    ct_tracker_destroy(t);
+    if (bad) {
+        fprintf(stderr, "ct-track: %s\n", msg);
+        return EXIT_USAGE;
+    }
+    return -1;
+}
+
 /* The checks between options, once all are read. */
 static int check_combination(options *o)
 {
@@ -210,16 +246,122 @@ static int check_combination(options *o)
                         "input; give the detections a FIFO\n");
         return EXIT_USAGE;
     }
-    if (o->overlay_path && !strcmp(o->overlay_path, "-") &&
-        (!o->out_path || !strcmp(o->out_path, "-"))) {
-        fprintf(stderr, "ct-track: --overlay - and the tracks cannot both go to standard "
-                        "output; give -o FILE\n");
+    /* One output at most on standard output. */
+    const char *first = NULL;
+    const char *const paths[] = {o->out_path ? o->out_path : "-", o->overlay_path,
+                                 o->events_path};
+    const char *const names[] = {"the tracks", "--overlay -", "--events -"};
+    for (int i = 0; i < 3; i++) {
+        if (!paths[i] || strcmp(paths[i], "-"))
+            continue;
+        if (first) {
+            fprintf(stderr, "ct-track: %s and %s cannot both go to standard output; give "
+                            "one a file (-o FILE for the tracks)\n",
+                    first, names[i]);
+            return EXIT_USAGE;
+        }
+        first = names[i];
+    }
+    if (o->events_path && o->counting.n_lines + o->counting.n_zones == 0) {
+        fprintf(stderr, "ct-track: --events writes the crossings of --line and the entries "
+                        "and exits of --zone: give one\n");
         return EXIT_USAGE;
     }
     char msg[512];
     if (ct_config_check(&o->cfg, msg, sizeof msg) != CT_OK) {
         fprintf(stderr, "ct-track: %s\n", msg);
         return EXIT_USAGE;
+    }
+    return check_counting(o);
+}
+
+enum {
+    OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
+    OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE, OPT_PRIME, OPT_FLUSH, OPT_LINE, OPT_ZONE,
+    OPT_EVENTS, OPT_HYSTERESIS
+};
+static const struct option longopts[] = {
+    {"detections", required_argument, NULL, 'd'},
+    {"size", required_argument, NULL, 's'},
+    {"format", required_argument, NULL, 'f'},
+    {"fps", required_argument, NULL, 'r'},
+    {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
+    {"prime", required_argument, NULL, OPT_PRIME},
+    {"output", required_argument, NULL, 'o'},
+    {"flush", no_argument, NULL, OPT_FLUSH},
+    {"overlay", required_argument, NULL, OPT_OVERLAY},
+    {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
+    {"overlay-size", no_argument, NULL, OPT_OVERLAY_SIZE},
+    {"line", required_argument, NULL, OPT_LINE},
+    {"zone", required_argument, NULL, OPT_ZONE},
+    {"events", required_argument, NULL, OPT_EVENTS},
+    {"hysteresis", required_argument, NULL, OPT_HYSTERESIS},
+    {"param", required_argument, NULL, 'p'},
+    {"progress", no_argument, NULL, OPT_PROGRESS},
+    {"stats", no_argument, NULL, OPT_STATS},
+    {"candidates", required_argument, NULL, OPT_CANDIDATES},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {"version", no_argument, NULL, 'V'},
+    {NULL, 0, NULL, 0},
+};
+
+/* The options whose value is checked: -1 when the value is good, else
+ * the exit status after a message. */
+static int parse_checked(options *o, int c, const char *arg)
+{
+    switch (c) {
+    case 's':
+        if (parse_size(arg, &o->width, &o->height) < 0) {
+            fprintf(stderr, "ct-track: --size: '%s' is not WxH with sides in [1, 16384]\n",
+                    arg);
+            return EXIT_USAGE;
+        }
+        break;
+    case 'f':
+        if (!strcmp(arg, "i420")) o->format = CT_FORMAT_I420;
+        else if (!strcmp(arg, "nv12")) o->format = CT_FORMAT_NV12;
+        else if (!strcmp(arg, "gray")) o->format = CT_FORMAT_GRAY8;
+        else {
+            fprintf(stderr, "ct-track: --format: '%s' is not i420, nv12 or gray\n", arg);
+            return EXIT_USAGE;
+        }
+        break;
+    case 'r':
+        if (parse_number(arg, VIDEO_MIN_RATE, VIDEO_MAX_RATE, &o->fps) < 0) {
+            fprintf(stderr, "ct-track: --fps: '%s' is not a rate in [%g, %g]\n", arg,
+                    VIDEO_MIN_RATE, VIDEO_MAX_RATE);
+            return EXIT_USAGE;
+        }
+        break;
+    case OPT_PRIME:
+        if (parse_number(arg, 0, 3600, &o->prime) < 0) {
+            fprintf(stderr, "ct-track: --prime: '%s' is not a duration in [0, 3600] "
+                            "seconds\n", arg);
+            return EXIT_USAGE;
+        }
+        break;
+    case OPT_LINE:
+    case OPT_ZONE: {
+        char msg[512];
+        if ((c == OPT_LINE ? counting_parse_line : counting_parse_zone)(
+                &o->counting, arg, msg, sizeof msg) < 0) {
+            fprintf(stderr, "ct-track: %s\n", msg);
+            return EXIT_USAGE;
+        }
+        break;
+    }
+    case OPT_HYSTERESIS:
+        if (parse_number(arg, 0, 2, &o->counting.hysteresis) < 0) {
+            fprintf(stderr, "ct-track: --hysteresis: '%s' is not a number in [0, 2] box "
+                            "heights\n", arg);
+            return EXIT_USAGE;
+        }
+        break;
+    case 'p':
+        if (set_param(&o->cfg, arg) < 0)
+            return EXIT_USAGE;
+        break;
     }
     return -1;
 }
@@ -231,83 +373,31 @@ int options_parse(int argc, char **argv, options *o)
     o->progress = isatty(STDERR_FILENO);
     o->format = CT_FORMAT_I420;
     o->prime = 0; /* online unless asked */
+    o->counting.hysteresis = -1;
 
-    enum {
-        OPT_NO_PIXELS = 256, OPT_PROGRESS, OPT_OVERLAY, OPT_STATS, OPT_CANDIDATES,
-        OPT_OVERLAY_CANDIDATES, OPT_OVERLAY_SIZE, OPT_PRIME, OPT_FLUSH
-    };
-    static const struct option longopts[] = {
-        {"detections", required_argument, NULL, 'd'},
-        {"size", required_argument, NULL, 's'},
-        {"format", required_argument, NULL, 'f'},
-        {"fps", required_argument, NULL, 'r'},
-        {"no-pixels", no_argument, NULL, OPT_NO_PIXELS},
-        {"prime", required_argument, NULL, OPT_PRIME},
-        {"output", required_argument, NULL, 'o'},
-        {"flush", no_argument, NULL, OPT_FLUSH},
-        {"overlay", required_argument, NULL, OPT_OVERLAY},
-        {"overlay-candidates", no_argument, NULL, OPT_OVERLAY_CANDIDATES},
-        {"overlay-size", no_argument, NULL, OPT_OVERLAY_SIZE},
-        {"param", required_argument, NULL, 'p'},
-        {"progress", no_argument, NULL, OPT_PROGRESS},
-        {"stats", no_argument, NULL, OPT_STATS},
-        {"candidates", required_argument, NULL, OPT_CANDIDATES},
-        {"quiet", no_argument, NULL, 'q'},
-        {"help", no_argument, NULL, 'h'},
-        {"version", no_argument, NULL, 'V'},
-        {NULL, 0, NULL, 0},
-    };
     int c;
     while ((c = getopt_long(argc, argv, "d:s:f:r:o:p:qhV", longopts, NULL)) != -1) {
         switch (c) {
         case 'd': o->det_path = optarg; break;
-        case 's':
-            if (parse_size(optarg, &o->width, &o->height) < 0) {
-                fprintf(stderr, "ct-track: --size: '%s' is not WxH with sides in [1, 16384]\n",
-                        optarg);
-                return EXIT_USAGE;
-            }
-            break;
-        case 'f':
-            if (!strcmp(optarg, "i420")) o->format = CT_FORMAT_I420;
-            else if (!strcmp(optarg, "nv12")) o->format = CT_FORMAT_NV12;
-            else if (!strcmp(optarg, "gray")) o->format = CT_FORMAT_GRAY8;
-            else {
-                fprintf(stderr, "ct-track: --format: '%s' is not i420, nv12 or gray\n", optarg);
-                return EXIT_USAGE;
-            }
-            break;
-        case 'r':
-            if (parse_number(optarg, VIDEO_MIN_RATE, VIDEO_MAX_RATE, &o->fps) < 0) {
-                fprintf(stderr, "ct-track: --fps: '%s' is not a rate in [%g, %g]\n", optarg,
-                        VIDEO_MIN_RATE, VIDEO_MAX_RATE);
-                return EXIT_USAGE;
-            }
-            break;
         case OPT_NO_PIXELS: o->no_pixels = 1; break;
-        case OPT_PRIME:
-            if (parse_number(optarg, 0, 3600, &o->prime) < 0) {
-                fprintf(stderr, "ct-track: --prime: '%s' is not a duration in [0, 3600] "
-                                "seconds\n", optarg);
-                return EXIT_USAGE;
-            }
-            break;
         case 'o': o->out_path = optarg; break;
         case OPT_FLUSH: o->flush = 1; break;
         case OPT_OVERLAY: o->overlay_path = optarg; break;
         case OPT_OVERLAY_CANDIDATES: o->overlay_candidates = 1; break;
         case OPT_OVERLAY_SIZE: o->overlay_size = 1; break;
-        case 'p':
-            if (set_param(&o->cfg, optarg) < 0)
-                return EXIT_USAGE;
-            break;
+        case OPT_EVENTS: o->events_path = optarg; break;
         case OPT_PROGRESS: o->progress = 1; break;
         case OPT_STATS: o->stats = 1; break;
         case OPT_CANDIDATES: o->candidates_path = optarg; break;
         case 'q': o->progress = 0; break;
         case 'h': usage(stdout); return 0;
         case 'V': printf("ct-track %s\n", ct_version_string()); return 0;
-        default: usage(stderr); return EXIT_USAGE;
+        case '?': usage(stderr); return EXIT_USAGE;
+        default: {
+            const int stop = parse_checked(o, c, optarg);
+            if (stop >= 0)
+                return stop;
+        }
         }
     }
     if (argc - optind > 1) {

@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include "counting.h"
 #include "ctrack/ctrack.h"
 
 enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
@@ -14,6 +15,8 @@ typedef struct options {
     const char *det_path;    /* NULL: the tracker finds people in the pixels */
     const char *out_path;    /* NULL: standard output */
     const char *overlay_path, *candidates_path;
+    const char *events_path;  /* --events: counting events as JSON lines */
+    counting_spec counting;   /* --line, --zone */
     int width, height;       /* --size (raw video, or detections only) */
     uint32_t format;         /* --format of a raw video */
     double fps;              /* --fps, 0 when not given */

@@ -29,7 +29,7 @@ extern "C" {
 
 /* The version, in one place: meson.build reads it from here. */
 #define CT_VERSION_MAJOR 0
-#define CT_VERSION_MINOR 9
+#define CT_VERSION_MINOR 10
 #define CT_VERSION_PATCH 0
 /* The ABI major: it is the shared library's SONAME number and moves only
  * when the ABI breaks. */
@@ -595,6 +595,144 @@ typedef struct ct_person_size {
 /* Fills *out (out->size must be set). ct_tracker_reset() forgets it, as a
  * new frame size does. */
 CT_API int ct_tracker_get_person_size(const ct_tracker *tracker, ct_person_size *out);
+
+/* ------------------------------------------------------------------------ */
+/* Counting (added in 0.10.0): lines that people cross and zones they enter,
+ * leave and stay in, counted from the tracks as they are made.
+ *
+ * A track's point (its anchor) is the bottom centre of its reported box:
+ * where a standing person's feet are. A step counts only confirmed tracks,
+ * and only at steps where they were seen (state CT_TRACK_CONFIRMED); a
+ * track carried through an occlusion counts when it is seen again, by the
+ * path from where it was last seen. A track's starting side of each line,
+ * and whether it started in each zone, is that of its first observed box,
+ * before it was confirmed: a person confirmed just after crossing is still
+ * counted, at the step that confirms them. (docs/API.md, "Counting".) */
+
+#define CT_COUNT_MAX_LINES 64
+#define CT_COUNT_MAX_ZONES 64
+#define CT_ZONE_MAX_POINTS 64
+/* The bytes of a name, its terminating NUL included. */
+#define CT_NAME_SIZE 32
+
+typedef struct ct_point {
+    float x, y; /* pixels, top-left origin */
+} ct_point;
+
+/* A counting line: the segment from a to b (not the infinite line through
+ * them). A crossing is "in" when the anchor goes to the right-hand side of
+ * the direction a -> b as the image shows it (for a segment drawn from left
+ * to right, downward), "out" the other way. */
+typedef struct ct_line {
+    /* sizeof(ct_line) as the caller's header knows it; ct_line_default()
+     * sets it. */
+    size_t size;
+    /* The end points, finite, at most 1e6 pixels from the origin, at least
+     * a pixel apart. Default (0, 0) and (0, 0): set them. */
+    ct_point a, b;
+    /* Copied; at most CT_NAME_SIZE - 1 bytes, unique among the tracker's
+     * lines. NULL or "" (default): "line<index>". */
+    const char *name;
+    /* How far past the line the anchor must go for a crossing to count,
+     * and then again the other way before another counts, in heights of the
+     * track's box: a person's feet jitter about a line they stand or walk
+     * on. Default 0.1, range [0, 2]. */
+    float hysteresis;
+} ct_line;
+
+/* A zone: a simple polygon (its edges do not cross or touch but at
+ * neighbouring corners), of non-zero area. A track is in it when its anchor
+ * is inside. */
+typedef struct ct_zone {
+    /* sizeof(ct_zone) as the caller's header knows it; ct_zone_default()
+     * sets it. */
+    size_t size;
+    /* points[0..n_points-1], read during the call only: 3 to
+     * CT_ZONE_MAX_POINTS corners in order (either way round), finite, at
+     * most 1e6 pixels from the origin. Default NULL and 0: set them. */
+    const ct_point *points;
+    int32_t n_points;
+    /* As ct_line's: NULL or "" (default) is "zone<index>". */
+    const char *name;
+    /* How far inside the zone (or outside it) the anchor must go, from its
+     * nearest edge, for an entry (or an exit) to count, in heights of the
+     * track's box. Default 0.1, range [0, 2]. */
+    float hysteresis;
+} ct_zone;
+
+CT_API int ct_line_default(ct_line *line, size_t size);
+CT_API int ct_zone_default(ct_zone *zone, size_t size);
+
+/* Adds a line (at most CT_COUNT_MAX_LINES) or a zone (at most
+ * CT_COUNT_MAX_ZONES); *index (when not NULL) receives its index, 0 for the
+ * first, in the order added. Lines and zones stay for the tracker's life;
+ * ct_tracker_reset() and ct_tracker_prime() keep them and their counts and
+ * forget their tracks (as the tracker does). A line or zone added while
+ * tracks run takes their side from their next observed box. A refused one
+ * (CT_ERROR_INVALID_ARGUMENT: a point not finite, a segment under a pixel,
+ * a polygon that crosses itself, has no area or too many corners, a name
+ * too long or taken, too many) changes nothing. */
+CT_API int ct_tracker_add_line(ct_tracker *tracker, const ct_line *line, int32_t *index);
+CT_API int ct_tracker_add_zone(ct_tracker *tracker, const ct_zone *zone, int32_t *index);
+
+typedef enum ct_event_kind {
+    CT_EVENT_LINE_IN = 1,    /* crossed a line to its right-hand side */
+    CT_EVENT_LINE_OUT = 2,   /* crossed a line to its left-hand side */
+    CT_EVENT_ZONE_ENTER = 3, /* went into a zone */
+    CT_EVENT_ZONE_EXIT = 4   /* came out of a zone, or ended in it */
+} ct_event_kind;
+
+typedef struct ct_event {
+    int32_t kind;          /* a ct_event_kind value */
+    int32_t index;         /* the line's or the zone's */
+    uint64_t track_id;
+    int64_t timestamp_us;  /* the step's */
+    float x, y;            /* the anchor (for an ended track, its last) */
+    /* CT_EVENT_ZONE_EXIT: the seconds it was in the zone; else 0. */
+    double dwell;
+    /* CT_EVENT_ZONE_EXIT: 1 when the track ended while in the zone (it
+     * left the image from it, or was lost past lost_lifetime), 0 when it
+     * was seen outside. */
+    int32_t ended;
+} ct_event;
+
+/* Copies the events of the last step, like ct_tracker_get_tracks(), in
+ * increasing track id, then line and zone order. */
+CT_API int ct_tracker_get_events(const ct_tracker *tracker, ct_event *out, size_t capacity,
+                                 size_t elem_size, size_t *count);
+
+typedef struct ct_line_count {
+    int32_t index;
+    char name[CT_NAME_SIZE];
+    uint64_t in, out; /* crossings since the line was added */
+} ct_line_count;
+
+typedef struct ct_zone_count {
+    int32_t index;
+    char name[CT_NAME_SIZE];
+    uint64_t entered, exited; /* since the zone was added */
+    /* The confirmed tracks in it now, lost ones included until they end. */
+    int32_t inside;
+} ct_zone_count;
+
+/* A confirmed track in a zone now. */
+typedef struct ct_occupant {
+    int32_t zone;
+    uint64_t track_id;
+    /* Seconds since it entered, or since it was first seen when it
+     * started in the zone. */
+    double dwell;
+} ct_occupant;
+
+/* Copy every line's and zone's counts, and the occupants of every zone (in
+ * zone, then track id order), as of the last step; like
+ * ct_tracker_get_tracks(). */
+CT_API int ct_tracker_get_line_counts(const ct_tracker *tracker, ct_line_count *out,
+                                      size_t capacity, size_t elem_size, size_t *count);
+CT_API int ct_tracker_get_zone_counts(const ct_tracker *tracker, ct_zone_count *out,
+                                      size_t capacity, size_t elem_size, size_t *count);
+CT_API int ct_tracker_get_occupants(const ct_tracker *tracker, ct_occupant *out,
+                                    size_t capacity, size_t elem_size, size_t *count);
 
 /* The name of a stage ("predict", ...), or NULL for a value that is not one. */
 CT_API const char *ct_stage_name(int stage);

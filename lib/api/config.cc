@@ -144,26 +144,8 @@ int check_field(const ct_config &c, const FieldRange &r, char *msg, size_t msg_l
 // The caller's struct over the defaults: sized as one this library can read.
 int read_config(const ct_config *in, ct_config *c, char *msg, size_t msg_len)
 {
-    switch (read_sized(in, in->size, kConfigSizeV1, c)) {
-    case SizedResult::too_small:
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.size: %zu is smaller than any ct_config (%zu); "
-                    "fill it with ct_config_default()",
-                    in->size, kConfigSizeV1);
-    case SizedResult::too_large:
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "config.size: %zu is larger than any ct_config can be (%zu): not set, or "
-                    "overwritten?",
-                    in->size, kMaxStructSize);
-    case SizedResult::unknown_fields:
-        return fail(msg, msg_len, CT_ERROR_UNSUPPORTED,
-                    "config.size: %zu bytes, of which this library (ctrack %s) knows %zu; "
-                    "the newer fields are set",
-                    in->size, ct_version_string(), sizeof(ct_config));
-    case SizedResult::ok:
-        break;
-    }
-    return CT_OK;
+    return explain_sized(read_sized(in, in->size, kConfigSizeV1, c), in->size, kConfigSizeV1,
+                         sizeof(ct_config), "config", "ct_config", msg, msg_len);
 }
 
 } // namespace

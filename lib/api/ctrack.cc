@@ -17,99 +17,18 @@
 #include "api/error.h"
 #include "api/frame.h"
 #include "api/sized.h"
+#include "api/tracker.h"
 #include "track/engine.h"
 #include "pixels/prime.h"
 
 #define CT_STR2(x) #x
 #define CT_STR(x) CT_STR2(x)
 
-struct ct_tracker {
-    ct_tracker(const ct_config &cfg, const ctrack::Memory &m)
-        : memory(m), construction(&memory), engine(cfg), source(cfg.source)
-    {
-        ctrack::dsp_init(&dsp, ctrack::cpu_flags());
-        construction.end();
-    }
-    // The host's allocator (or none): first, so that it outlives every
-    // container that allocates from it.
-    const ctrack::Memory memory;
-    // The members below are made with it.
-    ctrack::MemoryScope construction;
-    ctrack::Engine engine;
-    int source;
-    // The pixel kernels for this CPU, chosen when the tracker is made.
-    ctrack::Dsp dsp;
-    uint64_t steps = 0, feed_ns = 0, validate_ns = 0, convert_ns = 0;
-    // A packed colour frame's planes, made by the library (CT_FORMAT_BGR24,
-    // CT_FORMAT_RGB24): kept from one feed to the next, so that a steady
-    // stream of frames allocates nothing.
-    ctrack::Vec<int16_t> converted;
-    // The message of the last failed call. A fixed buffer: reporting an
-    // error never allocates.
-    mutable char error[512] = {0};
-};
+using ctrack::clear_error;
+using ctrack::copy_out;
+using ctrack::guarded;
 
 namespace {
-
-// Runs f, turning any exception into a status and a message.
-template <typename F>
-int guarded(const ct_tracker *t, F &&f)
-{
-    char *msg = t ? t->error : nullptr;
-    size_t len = t ? sizeof t->error : 0;
-    try {
-        return f();
-    } catch (const std::bad_alloc &) {
-        return ctrack::fail(msg, len, CT_ERROR_OUT_OF_MEMORY, "out of memory");
-    } catch (const std::exception &e) {
-        return ctrack::fail(msg, len, CT_ERROR_INTERNAL, "internal error: %s", e.what());
-    } catch (...) {
-        return ctrack::fail(msg, len, CT_ERROR_INTERNAL, "internal error: unknown exception");
-    }
-}
-
-void clear_error(const ct_tracker *t)
-{
-    t->error[0] = '\0';
-}
-
-// Copies items into the caller's array of elements of elem_size bytes (at
-// least min_size, the first published sizeof(T): an older header's element
-// gets the fields it has, a larger element's tail is zeroed), or reports the
-// count needed.
-template <typename T>
-int copy_out(const ct_tracker *tracker, const ctrack::Vec<T> &items, const char *what,
-             size_t min_size, void *out, size_t capacity, size_t elem_size, size_t *count)
-{
-    char *msg = tracker->error;
-    const size_t len = sizeof tracker->error;
-    if (!count)
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT, "count: NULL pointer");
-    *count = 0;
-    if (elem_size < min_size || elem_size > ctrack::kMaxStructSize) {
-        if (min_size == sizeof(T)) // never grown
-            return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                                "elem_size: %zu is not sizeof(ct_%s) (%zu, or more from a "
-                                "newer header)",
-                                elem_size, what, sizeof(T));
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                            "elem_size: %zu is not sizeof(ct_%s) (%zu, or %zu from an older "
-                            "header, or more from a newer one)",
-                            elem_size, what, sizeof(T), min_size);
-    }
-    if (capacity > 0 && !out)
-        return ctrack::fail(msg, len, CT_ERROR_INVALID_ARGUMENT,
-                            "out: NULL with capacity %zu", capacity);
-    *count = items.size();
-    if (capacity < items.size())
-        return ctrack::fail(msg, len, CT_ERROR_BUFFER_TOO_SMALL,
-                            "capacity: %zu %ss, %zu needed", capacity, what, items.size());
-    unsigned char *dst = static_cast<unsigned char *>(out);
-    for (size_t i = 0; i < items.size(); i++, dst += elem_size)
-        ctrack::write_sized(dst, elem_size, items[i]);
-    return CT_OK;
-}
-
 
 // One step on a validated frame: packed colour converted, the engine's
 // step, and the time it took counted (validate_ns already spent on it).
@@ -365,21 +284,15 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
 int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
                           size_t elem_size, size_t *count)
 {
-    if (!tracker)
-        return CT_ERROR_INVALID_ARGUMENT;
-    clear_error(tracker);
-    return copy_out(tracker, tracker->engine.reported(), "track", sizeof(ct_track), out,
+    return copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.reported(); }, "track", sizeof(ct_track), out,
                     capacity, elem_size, count);
 }
 
 int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out, size_t capacity,
                               size_t elem_size, size_t *count)
 {
-    if (!tracker)
-        return CT_ERROR_INVALID_ARGUMENT;
-    clear_error(tracker);
     // The first published ct_candidate (0.4.0) ended with region_distance.
-    return copy_out(tracker, tracker->engine.candidates(), "candidate",
+    return copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.candidates(); }, "candidate",
                     offsetof(ct_candidate, fill), out, capacity, elem_size, count);
 }
 

@@ -40,25 +40,9 @@ int load_frame(const ct_frame *in, ct_frame *out, char *msg, size_t msg_len)
     if (!in)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "frame: NULL pointer");
     ct_frame f = default_frame();
-    switch (read_sized(in, in->size, kFrameSizeV1, &f)) {
-    case SizedResult::too_small:
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "frame.size: %zu is smaller than any ct_frame (%zu); "
-                    "fill it with ct_frame_default()",
-                    in->size, kFrameSizeV1);
-    case SizedResult::too_large:
-        return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT,
-                    "frame.size: %zu is larger than any ct_frame can be (%zu): not set, or "
-                    "overwritten?",
-                    in->size, kMaxStructSize);
-    case SizedResult::unknown_fields:
-        return fail(msg, msg_len, CT_ERROR_UNSUPPORTED,
-                    "frame.size: %zu bytes, of which this library knows %zu; "
-                    "the newer fields are set",
-                    in->size, sizeof(ct_frame));
-    case SizedResult::ok:
-        break;
-    }
+    if (const int st = explain_sized(read_sized(in, in->size, kFrameSizeV1, &f), in->size, kFrameSizeV1,
+                                     sizeof(ct_frame), "frame", "ct_frame", msg, msg_len))
+        return st;
 
     int planes;
     switch (f.format) {

@@ -49,6 +49,12 @@ void write_sized(void *out, size_t size, const T &value)
     std::memcpy(out, &value, size < sizeof(T) ? size : sizeof(T));
 }
 
+// CT_OK for SizedResult::ok, else the error a caller's `name` (a `type`)
+// gets, with its message: `oldest` is the first published size of the
+// struct, `now` this library's.
+int explain_sized(SizedResult r, size_t caller_size, size_t oldest, size_t now,
+                  const char *name, const char *type, char *msg, size_t msg_len);
+
 } // namespace ctrack
 
 #endif

@@ -50,6 +50,7 @@ void Engine::reset()
     state_.clock = SceneClock();
     state_.learnt = SceneModels(cfg_);
     pixels_.reset();
+    count_.forget_tracks();
 }
 
 void Engine::begin_prime()
@@ -70,6 +71,7 @@ void Engine::end_prime() noexcept
     state_.learnt = before_prime_.learnt;
     state_.next_id = before_prime_.next_id;
     rewind();
+    count_.forget_tracks();
     before_prime_ = EngineState(cfg_);
     pixels_.drop_kept_background();
     priming_ = false;
@@ -529,6 +531,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     }
 
     report(t_us, image);
+    if (!priming_)
+        count_.step(t_us, state_.tracks, state_.reported);
     ns[CT_STAGE_REPORT] += sw.lap();
 }
 
@@ -574,7 +578,7 @@ size_t Engine::memory_bytes() const
             low_dets_.capacity() + row_pairs_.capacity() + col_pairs_.capacity()) *
                sizeof(int) +
            det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +
-           bank_.memory_bytes() + pixels_.memory_bytes();
+           bank_.memory_bytes() + pixels_.memory_bytes() + count_.memory_bytes();
 }
 
 bool Engine::reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const

@@ -9,6 +9,7 @@
 
 #include "base/counters.h"
 #include "base/memory.h"
+#include "count/counter.h"
 
 #include "ctrack/ctrack.h"
 #include "track/assign.h"
@@ -100,6 +101,9 @@ public:
     size_t live_tracks() const { return state_.tracks.size(); }
     const Counters &counters() const { return state_.counters; }
     const PersonSize &person_size() const { return state_.learnt.size; }
+    // The lines and zones counted on, from every step but the primed ones.
+    Counter &counter() { return count_; }
+    const Counter &counter() const { return count_; }
     size_t memory_bytes() const;
     bool has_time() const { return state_.has_time; }
     // This step's cleaned foreground mask at the background model's scale
@@ -210,6 +214,9 @@ private:
     bool appearance_ = false; // this step
     TemplateBank bank_;
     PixelCandidates pixels_;
+    // Counting runs last in a step: it changes nothing unless the step is
+    // done, and reset() and priming forget its tracks with the engine's.
+    Counter count_;
 
     // Association's scratch, reused from step to step.
     Gate gate_;

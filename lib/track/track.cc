@@ -63,6 +63,8 @@ void Track::start(const ct_detection &d, double detection_noise, int index, int6
     seen = det_box(d);
     start_x = d.left + d.width / 2.0;
     start_y = d.top + d.height / 2.0;
+    start_bottom = (double)d.top + d.height;
+    start_us = t_us;
     det_index = index;
     class_id = d.class_id;
     score = d.score;

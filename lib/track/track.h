@@ -46,6 +46,10 @@ struct Track {
     // track that never moved may be a ghost of the background model.
     double start_x = 0, start_y = 0;
     bool moved = false;
+    // Its first box's bottom, and when it was seen: where counting takes
+    // its starting side of a line from.
+    double start_bottom = 0;
+    int64_t start_us = 0;
     int det_index = -1;
     int class_id = 0;
     float score = 0;

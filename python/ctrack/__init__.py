@@ -29,12 +29,15 @@ import numpy as np
 from . import _abi
 from ._abi import (TRACK_CONFIRMED, TRACK_LOST, TRACK_TENTATIVE,  # noqa: F401
                    SOURCE_DETECTIONS, SOURCE_PIXELS, PEDESTRIAN_TEMPLATE, PEDESTRIAN_SIZE,
-                   PRIME_SECONDS, PRIME_MAX_FRAMES, PRIME_MAX_BYTES)
+                   PRIME_SECONDS, PRIME_MAX_FRAMES, PRIME_MAX_BYTES, EVENT_LINE_IN,
+                   EVENT_LINE_OUT, EVENT_ZONE_ENTER, EVENT_ZONE_EXIT)
 
 __all__ = ["Tracker", "CtrackError", "load", "version", "version_number", "abi_version",
            "mot_lines", "from_xyxy", "draw", "Trails", "TRACK_DTYPE", "CANDIDATE_DTYPE", "SOURCE_DETECTIONS", "SOURCE_PIXELS",
            "PEDESTRIAN_TEMPLATE", "PEDESTRIAN_SIZE", "PRIME_SECONDS", "PRIME_MAX_FRAMES",
-           "PRIME_MAX_BYTES", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE"]
+           "PRIME_MAX_BYTES", "TRACK_CONFIRMED", "TRACK_LOST", "TRACK_TENTATIVE",
+           "EVENT_DTYPE", "EVENT_LINE_IN", "EVENT_LINE_OUT", "EVENT_ZONE_ENTER",
+           "EVENT_ZONE_EXIT"]
 
 #: The version of the header this package mirrors (the library it loads
 #: may be newer: version() tells).
@@ -46,6 +49,10 @@ _lib = None
 TRACK_DTYPE = np.dtype(_abi.Track)
 #: The numpy dtype of a candidate (pixels only): the fields of ct_candidate.
 CANDIDATE_DTYPE = np.dtype(_abi.Candidate)
+#: The numpy dtype of a counting event (library 0.10.0): the fields of
+#: ct_event (kind, index of the line or zone, track_id, timestamp_us, x, y,
+#: dwell, ended).
+EVENT_DTYPE = np.dtype(_abi.Event)
 _DET_DTYPE = np.dtype(_abi.Detection)
 _CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
 
@@ -379,6 +386,125 @@ class Tracker:
         self._check(st)
         return np.frombuffer(self._out, dtype=TRACK_DTYPE, count=count.value).copy()
 
+    def _copy_all(self, getter, cls):
+        """Everything a ct_tracker_get_* array getter has, as a ctypes
+        array of cls and its count."""
+        t = self._handle()
+        fn = getattr(self._lib, getter)
+        count = ctypes.c_size_t()
+        size = ctypes.sizeof(cls)
+        st = fn(t, None, 0, size, ctypes.byref(count))
+        if st not in (_abi.OK, _abi.ERROR_BUFFER_TOO_SMALL):
+            self._check(st)
+        buf = (cls * max(1, count.value))()
+        self._check(fn(t, buf, len(buf), size, ctypes.byref(count)))
+        return buf, count.value
+
+    # -- counting ----------------------------------------------------------
+    def _need_counting(self):
+        if not hasattr(self._lib, "ct_tracker_add_line"):
+            raise CtrackError(_abi.ERROR_UNSUPPORTED,
+                              "counting needs libctrack 0.10.0 or newer (this one is %s)"
+                              % self._lib.ct_version_string().decode())
+
+    @staticmethod
+    def _name(name):
+        if name is None:
+            return None
+        if not isinstance(name, str):
+            raise TypeError("name: %r is not a str" % (name,))
+        return name.encode()
+
+    @staticmethod
+    def _point(p, what):
+        try:
+            x, y = (float(v) for v in p)
+        except (TypeError, ValueError):
+            raise ValueError("%s: %r is not a point (x, y)" % (what, p)) from None
+        return _abi.Point(x, y)
+
+    @_locked
+    def add_line(self, a, b, name=None, hysteresis=None):
+        """Counts crossings of the segment from a to b ((x, y) in pixels):
+        "in" to the right-hand side of a -> b as the image shows it (for a
+        line drawn left to right, downward), "out" the other way. `name`
+        (default "line<index>") names it in counts(); `hysteresis` (default
+        0.1) is how far past the line, in heights of the track's box, the
+        feet must go for a crossing to count. Returns its index, the
+        `index` of its events. ValueError for a bad line (nothing
+        added)."""
+        self._need_counting()
+        line = _abi.Line()
+        self._lib.ct_line_default(ctypes.byref(line), ctypes.sizeof(line))
+        line.a = self._point(a, "a")
+        line.b = self._point(b, "b")
+        return self._add(self._lib.ct_tracker_add_line, line, name, hysteresis)
+
+    @_locked
+    def add_zone(self, points, name=None, hysteresis=None):
+        """Counts the people who enter and leave the polygon `points` (3 to
+        64 (x, y) corners in order, its edges not crossing) and those in it
+        now, with their dwell time. `name` defaults to "zone<index>";
+        `hysteresis` (default 0.1 box heights) is how far inside or outside
+        it, from its nearest edge, the feet must go. Returns its index.
+        ValueError for a bad zone (nothing added)."""
+        self._need_counting()
+        pts = [self._point(p, "points[%d]" % i) for i, p in enumerate(points)]
+        arr = (_abi.Point * max(1, len(pts)))(*pts)
+        zone = _abi.Zone()
+        self._lib.ct_zone_default(ctypes.byref(zone), ctypes.sizeof(zone))
+        zone.points = arr
+        zone.n_points = len(pts)
+        return self._add(self._lib.ct_tracker_add_zone, zone, name, hysteresis)
+
+    def _add(self, add, shape, name, hysteresis):
+        """A ct_line or ct_zone named and with its hysteresis, added by
+        add; its index. An argument the library refused is the caller's
+        ValueError."""
+        shape.name = self._name(name)
+        if hysteresis is not None:
+            shape.hysteresis = float(hysteresis)
+        index = ctypes.c_int32()
+        st = add(self._handle(), ctypes.byref(shape), ctypes.byref(index))
+        if st == _abi.ERROR_INVALID_ARGUMENT:
+            raise ValueError(self._lib.ct_tracker_last_error(self._t).decode())
+        self._check(st)
+        return index.value
+
+    @_locked
+    def events(self):
+        """The counting events of the last step, a numpy structured array
+        (EVENT_DTYPE): kind (EVENT_LINE_IN, EVENT_LINE_OUT, EVENT_ZONE_ENTER,
+        EVENT_ZONE_EXIT), the line's or zone's index, track_id,
+        timestamp_us, the feet's x and y, and for an exit the dwell in
+        seconds and ended (1 when the track ended in the zone)."""
+        if not hasattr(self._lib, "ct_tracker_get_events"):
+            return np.zeros(0, dtype=EVENT_DTYPE)
+        buf, n = self._copy_all("ct_tracker_get_events", _abi.Event)
+        return np.frombuffer(buf, dtype=EVENT_DTYPE, count=n).copy()
+
+    @_locked
+    def counts(self):
+        """The counts as of the last step: {"lines": {name: {"in": n,
+        "out": n}}, "zones": {name: {"entered": n, "exited": n, "inside": n,
+        "occupants": {track_id: dwell seconds}}}}, in the order added."""
+        if not hasattr(self._lib, "ct_tracker_get_line_counts"):
+            return {"lines": {}, "zones": {}}
+        lines, nl = self._copy_all("ct_tracker_get_line_counts", _abi.LineCount)
+        zones, nz = self._copy_all("ct_tracker_get_zone_counts", _abi.ZoneCount)
+        occ, no = self._copy_all("ct_tracker_get_occupants", _abi.Occupant)
+        out = {"lines": {}, "zones": {}}
+        for c in lines[:nl]:
+            out["lines"][c.name.decode()] = {"in": c.in_, "out": c.out}
+        names = []
+        for c in zones[:nz]:
+            names.append(c.name.decode())
+            out["zones"][names[-1]] = {"entered": c.entered, "exited": c.exited,
+                                       "inside": c.inside, "occupants": {}}
+        for o in occ[:no]:
+            out["zones"][names[o.zone]]["occupants"][o.track_id] = o.dwell
+        return out
+
     @_locked
     def candidates(self):
         """From the pixels alone (source=SOURCE_PIXELS): the blobs of the
@@ -388,16 +514,8 @@ class Tracker:
         wide its top is against its body).
         With detections and verify_detections=1: one vote per detection of
         the last step, in their order."""
-        t = self._handle()
-        count = ctypes.c_size_t()
-        size = ctypes.sizeof(_abi.Candidate)
-        st = self._lib.ct_tracker_get_candidates(t, None, 0, size, ctypes.byref(count))
-        if st not in (_abi.OK, _abi.ERROR_BUFFER_TOO_SMALL):
-            self._check(st)
-        buf = (_abi.Candidate * max(1, count.value))()
-        self._check(self._lib.ct_tracker_get_candidates(t, buf, len(buf), size,
-                                                         ctypes.byref(count)))
-        return np.frombuffer(buf, dtype=CANDIDATE_DTYPE, count=count.value).copy()
+        buf, n = self._copy_all("ct_tracker_get_candidates", _abi.Candidate)
+        return np.frombuffer(buf, dtype=CANDIDATE_DTYPE, count=n).copy()
 
     @_locked
     def person_size(self):

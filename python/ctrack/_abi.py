@@ -9,7 +9,7 @@ ABI_VERSION = 1
 # The version of include/ctrack/ctrack.h these mirrors follow, and the Python
 # package's (python/pyproject.toml); test_abi.py checks it against the
 # library's.
-VERSION = "0.9.0"
+VERSION = "0.10.0"
 
 OK = 0
 ERROR_INVALID_ARGUMENT = -1
@@ -191,6 +191,81 @@ class Allocator(C.Structure):
     ]
 
 
+# Added in 0.10.0: counting on lines and zones.
+COUNT_MAX_LINES = 64
+COUNT_MAX_ZONES = 64
+ZONE_MAX_POINTS = 64
+NAME_SIZE = 32
+EVENT_LINE_IN = 1
+EVENT_LINE_OUT = 2
+EVENT_ZONE_ENTER = 3
+EVENT_ZONE_EXIT = 4
+
+
+class Point(C.Structure):
+    _fields_ = [("x", C.c_float), ("y", C.c_float)]
+
+
+class Line(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("a", Point),
+        ("b", Point),
+        ("name", C.c_char_p),
+        ("hysteresis", C.c_float),
+    ]
+
+
+class Zone(C.Structure):
+    _fields_ = [
+        ("size", C.c_size_t),
+        ("points", C.POINTER(Point)),
+        ("n_points", C.c_int32),
+        ("name", C.c_char_p),
+        ("hysteresis", C.c_float),
+    ]
+
+
+class Event(C.Structure):
+    _fields_ = [
+        ("kind", C.c_int32),
+        ("index", C.c_int32),
+        ("track_id", C.c_uint64),
+        ("timestamp_us", C.c_int64),
+        ("x", C.c_float),
+        ("y", C.c_float),
+        ("dwell", C.c_double),
+        ("ended", C.c_int32),
+    ]
+
+
+class LineCount(C.Structure):
+    _fields_ = [
+        ("index", C.c_int32),
+        ("name", C.c_char * NAME_SIZE),
+        ("in_", C.c_uint64),  # "in" in C
+        ("out", C.c_uint64),
+    ]
+
+
+class ZoneCount(C.Structure):
+    _fields_ = [
+        ("index", C.c_int32),
+        ("name", C.c_char * NAME_SIZE),
+        ("entered", C.c_uint64),
+        ("exited", C.c_uint64),
+        ("inside", C.c_int32),
+    ]
+
+
+class Occupant(C.Structure):
+    _fields_ = [
+        ("zone", C.c_int32),
+        ("track_id", C.c_uint64),
+        ("dwell", C.c_double),
+    ]
+
+
 def declare(lib):
     """Sets the argument and result types of every function of `lib`."""
     P = C.POINTER
@@ -222,6 +297,19 @@ def declare(lib):
     if hasattr(lib, "ct_tracker_create_with_allocator"):
         sig["ct_tracker_create_with_allocator"] = (C.c_int, [P(Config), P(Allocator),
                                                              P(C.c_void_p)])
+    # Added in 0.10.0.
+    if hasattr(lib, "ct_tracker_add_line"):
+        getter = (C.c_int, [C.c_void_p, C.c_void_p, C.c_size_t, C.c_size_t, P(C.c_size_t)])
+        sig.update({
+            "ct_line_default": (C.c_int, [P(Line), C.c_size_t]),
+            "ct_zone_default": (C.c_int, [P(Zone), C.c_size_t]),
+            "ct_tracker_add_line": (C.c_int, [C.c_void_p, P(Line), P(C.c_int32)]),
+            "ct_tracker_add_zone": (C.c_int, [C.c_void_p, P(Zone), P(C.c_int32)]),
+            "ct_tracker_get_events": getter,
+            "ct_tracker_get_line_counts": getter,
+            "ct_tracker_get_zone_counts": getter,
+            "ct_tracker_get_occupants": getter,
+        })
     for name, (res, args) in sig.items():
         f = getattr(lib, name)
         f.restype = res

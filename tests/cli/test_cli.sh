@@ -336,6 +336,63 @@ if [ -w /dev/full ]; then
 fi
 expect "detections beyond the video" 0 "detections go to frame 71" -- "$ct" -q -d "$tud/det/det.txt" "$tmp/tiny.y4m"
 
+# --- counting ----------------------------------------------------------------
+# Lines and a zone on PETS09-S2L1's detections: the events are JSON lines,
+# and their crossings, entries and exits add up to the counts printed.
+pets=$data/PETS09-S2L1/det/det.txt
+expect "pets without counting" 0 "" -- "$ct" -q -d "$pets" -s 768x576 -r 7 -o "$tmp/pets.txt"
+expect "counting" 0 "ct-track: line mid:" -- "$ct" -q -d "$pets" -s 768x576 -r 7 \
+    -o "$tmp/counted.txt" --line 400,0,400,576,mid --line 0,400,768,400 \
+    --zone 100,300,400,300,400,500,100,500,square --events "$tmp/events.jsonl"
+if python3 - "$tmp/events.jsonl" "$tmp/err" <<'PY'
+import json, re, sys
+counts = {}
+for line in open(sys.argv[1]):
+    e = json.loads(line)
+    assert set(e) >= {"frame", "time", "track", "kind", "direction"}, e
+    name = e.get("line", e.get("zone"))
+    key = {"cross": e["direction"], "enter": "entered", "exit": "exited"}[e["kind"]]
+    counts[(name, key)] = counts.get((name, key), 0) + 1
+printed = {}
+for m in re.finditer(r"line (\S+): (\d+) in, (\d+) out", open(sys.argv[2]).read()):
+    printed[(m[1], "in")], printed[(m[1], "out")] = int(m[2]), int(m[3])
+for m in re.finditer(r"zone (\S+): (\d+) entered, (\d+) exited", open(sys.argv[2]).read()):
+    printed[(m[1], "entered")], printed[(m[1], "exited")] = int(m[2]), int(m[3])
+assert len(printed) == 6, printed
+assert {k: v for k, v in printed.items() if v} == counts, (printed, counts)
+assert sum(counts.values()) >= 20, counts
+PY
+then ok "counting: events add up to the counts printed"; else bad "counting: events add up to the counts printed" "see above"; fi
+cmp -s "$tmp/counted.txt" "$tmp/pets.txt" && ok "counting leaves the tracks as they were" || bad "counting leaves the tracks as they were" "differ"
+expect "counting on the overlay" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -o /dev/null \
+    --line 320,0,320,480 --zone 100,100,540,100,540,470 --overlay "$tmp/counted.y4m"
+expect "events to standard output" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -o /dev/null \
+    --line 320,0,320,480 --events -
+grep -q '"kind": "cross"' "$tmp/out" && ok "events to standard output written" || bad "events to standard output written" "$(head -c 200 "$tmp/out")"
+expect "events and tracks both on standard output" 2 "--events -" -- "$ct" -d "$tud/det/det.txt" --line 0,0,9,9 --events -
+expect "events without lines or zones" 2 "--events writes" -- "$ct" -d "$tud/det/det.txt" --events "$tmp/e.jsonl"
+expect "events over the detections" 1 "would overwrite" -- "$ct" -d "$tud/det/det.txt" --line 0,0,9,9 --events "$tud/det/det.txt"
+expect "line with 3 numbers" 2 "4 numbers, got 3" -- "$ct" -d "$tud/det/det.txt" --line 1,2,3
+expect "line with a word inside" 2 "'x' is not a number" -- "$ct" -d "$tud/det/det.txt" --line 1,x,3,4
+expect "line with 5 numbers" 2 "more than 4 numbers" -- "$ct" -d "$tud/det/det.txt" --line 1,2,3,4,5
+expect "line with nan" 2 "not a finite number" -- "$ct" -d "$tud/det/det.txt" --line 1,nan,3,4
+expect "line of one point" 2 "under a pixel" -- "$ct" -d "$tud/det/det.txt" --line 5,5,5,5
+expect "line name too long" 2 "at most 31" -- "$ct" -d "$tud/det/det.txt" --line 0,0,9,9,abcdefghijklmnopqrstuvwxyzabcdefgh
+expect "line name twice" 2 "already line 0" -- "$ct" -d "$tud/det/det.txt" --line 0,0,9,9,a --line 0,0,19,9,a
+expect "zone of two corners" 2 "3 to 64 corners" -- "$ct" -d "$tud/det/det.txt" --zone 0,0,9,9
+expect "zone odd numbers" 2 "got 7 numbers" -- "$ct" -d "$tud/det/det.txt" --zone 0,0,9,9,9,0,4
+expect "zone crossing itself" 2 "cross or touch" -- "$ct" -d "$tud/det/det.txt" --zone 0,0,100,100,100,0,0,100
+expect "zone without area" 2 "not a simple polygon" -- "$ct" -d "$tud/det/det.txt" --zone 0,0,50,50,100,100
+expect "zone past 1e6" 2 "not a point of an image" -- "$ct" -d "$tud/det/det.txt" --zone 0,0,9e9,0,0,9
+for v in -0.1 nan 3 x; do
+    expect "bad --hysteresis '$v'" 2 "--hysteresis" -- "$ct" -d "$tud/det/det.txt" --line 0,0,9,9 --hysteresis "$v"
+done
+expect "a wider hysteresis counts no more" 0 "ct-track: line mid:" -- "$ct" -q -d "$pets" -s 768x576 -r 7 \
+    -o /dev/null --line 400,0,400,576,mid --hysteresis 0.5
+# A refused line opens nothing: the output is not created.
+expect "bad line writes nothing" 2 "under a pixel" -- "$ct" -d "$tud/det/det.txt" -s 640x480 -o "$tmp/never.txt" --line 5,5,5,5
+[ ! -e "$tmp/never.txt" ] && ok "bad line: no output file" || bad "bad line: no output file" "created"
+
 # Damaged files and parameters, a fixed-seed stream of them.
 if python3 "$(dirname "$0")/mutated_inputs.py" "$ct" > "$tmp/mutated.log" 2>&1; then
     ok "damaged inputs: $(tail -n 1 "$tmp/mutated.log")"

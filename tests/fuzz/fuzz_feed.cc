@@ -3,8 +3,9 @@
 // format (each plane in a buffer of exactly the size the frame claims, so
 // AddressSanitizer sees any read past it), detections with NaN, infinities,
 // huge, negative and thousands of overlapping boxes, timestamps that go
-// back or jump, and get_tracks, get_candidates, get_stats, get_person_size
-// and reset in between.
+// back or jump, and get_tracks, get_candidates, get_stats, get_person_size,
+// reset, priming and counting lines and zones (NaN, huge, degenerate,
+// self-crossing, too many corners, long names) in between.
 //
 // Beyond the sanitizers it checks, after every call:
 //   - a twin tracker, created alike and given only the calls that succeeded
@@ -25,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "ctrack/ctrack.h"
@@ -257,9 +259,33 @@ std::vector<ct_detection> fuzz_detections(FuzzedDataProvider &in, const int *sha
 
 bool finite(float v) { return std::isfinite(v); }
 
+// Everything a getter of `T` has, through the buffer-size protocol.
+template <typename T, typename Get> std::vector<T> all_of(const ct_tracker *t, Get get)
+{
+    size_t count = 0;
+    const int st = get(t, nullptr, 0, sizeof(T), &count);
+    CHECK(st == (count ? CT_ERROR_BUFFER_TOO_SMALL : CT_OK));
+    std::vector<T> v(count + 1);
+    size_t got = 0;
+    CHECK(get(t, v.data(), v.size(), sizeof(T), &got) == CT_OK);
+    CHECK(got == count);
+    v.resize(got);
+    return v;
+}
+
+template <typename T> bool same_bytes(const std::vector<T> &a, const std::vector<T> &b)
+{
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
 struct Output {
     std::vector<ct_track> tracks;
     std::vector<ct_candidate> candidates;
+    std::vector<ct_event> events;
+    std::vector<ct_line_count> lines;
+    std::vector<ct_zone_count> zones;
+    std::vector<ct_occupant> occupants;
     uint64_t steps = 0, live = 0;
     ct_person_size size{};
 };
@@ -307,6 +333,10 @@ Output output_of(const ct_tracker *t)
     o.live = s.live_tracks;
     o.size.size = sizeof o.size;
     CHECK(ct_tracker_get_person_size(t, &o.size) == CT_OK);
+    o.events = all_of<ct_event>(t, ct_tracker_get_events);
+    o.lines = all_of<ct_line_count>(t, ct_tracker_get_line_counts);
+    o.zones = all_of<ct_zone_count>(t, ct_tracker_get_zone_counts);
+    o.occupants = all_of<ct_occupant>(t, ct_tracker_get_occupants);
     return o;
 }
 
@@ -320,7 +350,9 @@ bool same(const Output &a, const Output &b)
             std::memcmp(a.candidates.data(), b.candidates.data(),
                         a.candidates.size() * sizeof(ct_candidate)) == 0) &&
            a.steps == b.steps && a.live == b.live &&
-           std::memcmp(&a.size, &b.size, sizeof a.size) == 0;
+           std::memcmp(&a.size, &b.size, sizeof a.size) == 0 && same_bytes(a.events, b.events) &&
+           same_bytes(a.lines, b.lines) && same_bytes(a.zones, b.zones) &&
+           same_bytes(a.occupants, b.occupants);
 }
 
 // The reported numbers are finite and in range; ids never come back.
@@ -364,6 +396,62 @@ void check_output(const Output &o, const ct_config &cfg, size_t n_dets, const ct
     }
     CHECK(std::isfinite(o.size.height_slope) && std::isfinite(o.size.height_intercept) &&
           std::isfinite(o.size.width_ratio));
+    // Counting: events of reported ids, on lines and zones that exist, at
+    // finite points; each name NUL-terminated.
+    for (const ct_event &e : o.events) {
+        CHECK(e.kind >= CT_EVENT_LINE_IN && e.kind <= CT_EVENT_ZONE_EXIT);
+        const bool line = e.kind <= CT_EVENT_LINE_OUT;
+        CHECK(e.index >= 0 && (size_t)e.index < (line ? o.lines.size() : o.zones.size()));
+        CHECK(e.track_id > 0 && e.track_id <= *max_id);
+        CHECK(std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.dwell) &&
+              e.dwell >= 0);
+    }
+    for (const ct_line_count &c : o.lines)
+        CHECK(std::memchr(c.name, 0, sizeof c.name));
+    for (const ct_zone_count &c : o.zones)
+        CHECK(std::memchr(c.name, 0, sizeof c.name) && c.inside >= 0);
+}
+
+// A fuzzed point: mostly inside a small image, sometimes NaN, huge, far.
+ct_point fuzz_point(FuzzedDataProvider &in, const int shape[2])
+{
+    return ct_point{fuzz_float(in, -20.0f, (float)shape[0] + 20),
+                    fuzz_float(in, -20.0f, (float)shape[1] + 20)};
+}
+
+// Adds a fuzzed line or zone to both trackers: refused by both, or added to
+// both.
+void add_counting(FuzzedDataProvider &in, ct_tracker *a, ct_tracker *b, const int shape[2])
+{
+    const std::string name = in.ConsumeRandomLengthString(40);
+    const char *pname = in.ConsumeBool() ? name.c_str() : nullptr;
+    int r;
+    if (in.ConsumeBool()) {
+        ct_line l;
+        ct_line_default(&l, sizeof l);
+        l.a = fuzz_point(in, shape);
+        l.b = fuzz_point(in, shape);
+        l.name = pname;
+        if (in.ConsumeBool())
+            l.hysteresis = fuzz_float(in, -0.5f, 3.0f);
+        r = ct_tracker_add_line(a, &l, nullptr);
+        CHECK(ct_tracker_add_line(b, &l, nullptr) == r);
+    } else {
+        std::vector<ct_point> p(in.ConsumeIntegralInRange<size_t>(0, CT_ZONE_MAX_POINTS + 2));
+        for (ct_point &q : p)
+            q = fuzz_point(in, shape);
+        ct_zone z;
+        ct_zone_default(&z, sizeof z);
+        z.points = p.empty() ? nullptr : p.data();
+        z.n_points = (int32_t)p.size();
+        z.name = pname;
+        if (in.ConsumeBool())
+            z.hysteresis = fuzz_float(in, -0.5f, 3.0f);
+        r = ct_tracker_add_zone(a, &z, nullptr);
+        CHECK(ct_tracker_add_zone(b, &z, nullptr) == r);
+    }
+    CHECK(r == CT_OK || r == CT_ERROR_INVALID_ARGUMENT);
+    CHECK(r == CT_OK || ct_tracker_last_error(a)[0] != '\0');
 }
 
 } // namespace
@@ -396,7 +484,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t last_n = 0;
     Output before = output_of(a);
     for (int step = 0; step < 48 && in.remaining_bytes() > 0; step++) {
-        const int op = in.ConsumeIntegralInRange<int>(0, 10);
+        const int op = in.ConsumeIntegralInRange<int>(0, 11);
         if (op <= 6) {
             Frame fr;
             const int64_t last_clock = clock;
@@ -447,6 +535,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else if (op == 9) {
             shape[0] = in.ConsumeIntegralInRange<int>(8, 96);
             shape[1] = in.ConsumeIntegralInRange<int>(8, 96);
+        } else if (op == 11) {
+            add_counting(in, a, b, shape);
+            before = output_of(a);
+            CHECK(same(before, output_of(b)));
         } else {
             // Priming on a few fuzzed frames (any of them NULL, without
             // pixels, of other sizes, out of order): refused with nothing

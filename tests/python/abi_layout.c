@@ -69,17 +69,51 @@ int main(void)
     printf("}, \"Allocator\": {\"sizeof\": %zu, ", sizeof(ct_allocator));
     FIELD(ct_allocator, size); FIELD(ct_allocator, alloc); FIELD(ct_allocator, free);
     FIELD(ct_allocator, opaque);
+    first = 0;
+    printf("}, \"Point\": {\"sizeof\": %zu, ", sizeof(ct_point));
+    FIELD(ct_point, x); FIELD(ct_point, y);
+    first = 0;
+    printf("}, \"Line\": {\"sizeof\": %zu, ", sizeof(ct_line));
+    FIELD(ct_line, size); FIELD(ct_line, a); FIELD(ct_line, b); FIELD(ct_line, name);
+    FIELD(ct_line, hysteresis);
+    first = 0;
+    printf("}, \"Zone\": {\"sizeof\": %zu, ", sizeof(ct_zone));
+    FIELD(ct_zone, size); FIELD(ct_zone, points); FIELD(ct_zone, n_points);
+    FIELD(ct_zone, name); FIELD(ct_zone, hysteresis);
+    first = 0;
+    printf("}, \"Event\": {\"sizeof\": %zu, ", sizeof(ct_event));
+    FIELD(ct_event, kind); FIELD(ct_event, index); FIELD(ct_event, track_id);
+    FIELD(ct_event, timestamp_us); FIELD(ct_event, x); FIELD(ct_event, y);
+    FIELD(ct_event, dwell); FIELD(ct_event, ended);
+    first = 0;
+    /* "in" is a Python keyword: the binding names it in_. */
+    printf("}, \"LineCount\": {\"sizeof\": %zu, ", sizeof(ct_line_count));
+    FIELD(ct_line_count, index); FIELD(ct_line_count, name);
+    printf(", \"in_\": %zu", offsetof(ct_line_count, in));
+    FIELD(ct_line_count, out);
+    first = 0;
+    printf("}, \"ZoneCount\": {\"sizeof\": %zu, ", sizeof(ct_zone_count));
+    FIELD(ct_zone_count, index); FIELD(ct_zone_count, name); FIELD(ct_zone_count, entered);
+    FIELD(ct_zone_count, exited); FIELD(ct_zone_count, inside);
+    first = 0;
+    printf("}, \"Occupant\": {\"sizeof\": %zu, ", sizeof(ct_occupant));
+    FIELD(ct_occupant, zone); FIELD(ct_occupant, track_id); FIELD(ct_occupant, dwell);
     /* The constants the binding mirrors. */
     printf("}, \"Constants\": {\"FORMAT_NONE\": %u, \"FORMAT_I420\": %u, "
            "\"FORMAT_NV12\": %u, \"FORMAT_GRAY8\": %u, \"FORMAT_BGR24\": %u, "
            "\"FORMAT_RGB24\": %u, \"SOURCE_DETECTIONS\": %d, \"SOURCE_PIXELS\": %d, "
            "\"TRACK_TENTATIVE\": %d, \"TRACK_CONFIRMED\": %d, \"TRACK_LOST\": %d, "
-           "\"PEDESTRIAN_TEMPLATE\": %d, \"PEDESTRIAN_SIZE\": %d, \"PRIME_SECONDS\": %.17g",
+           "\"PEDESTRIAN_TEMPLATE\": %d, \"PEDESTRIAN_SIZE\": %d, \"PRIME_SECONDS\": %.17g, "
+           "\"COUNT_MAX_LINES\": %d, \"COUNT_MAX_ZONES\": %d, \"ZONE_MAX_POINTS\": %d, "
+           "\"NAME_SIZE\": %d, \"EVENT_LINE_IN\": %d, \"EVENT_LINE_OUT\": %d, "
+           "\"EVENT_ZONE_ENTER\": %d, \"EVENT_ZONE_EXIT\": %d",
            (unsigned)CT_FORMAT_NONE, (unsigned)CT_FORMAT_I420, (unsigned)CT_FORMAT_NV12,
            (unsigned)CT_FORMAT_GRAY8, (unsigned)CT_FORMAT_BGR24, (unsigned)CT_FORMAT_RGB24,
            (int)CT_SOURCE_DETECTIONS, (int)CT_SOURCE_PIXELS, (int)CT_TRACK_TENTATIVE,
            (int)CT_TRACK_CONFIRMED, (int)CT_TRACK_LOST, (int)CT_PEDESTRIAN_TEMPLATE,
-           (int)CT_PEDESTRIAN_SIZE, (double)CT_PRIME_SECONDS);
+           (int)CT_PEDESTRIAN_SIZE, (double)CT_PRIME_SECONDS, CT_COUNT_MAX_LINES,
+           CT_COUNT_MAX_ZONES, CT_ZONE_MAX_POINTS, CT_NAME_SIZE, (int)CT_EVENT_LINE_IN,
+           (int)CT_EVENT_LINE_OUT, (int)CT_EVENT_ZONE_ENTER, (int)CT_EVENT_ZONE_EXIT);
     printf("}}\n");
     return 0;
 }

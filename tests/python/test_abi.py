@@ -17,7 +17,8 @@ def layout():
 
 
 @pytest.mark.parametrize("name", ["Config", "Frame", "Detection", "Track", "Stats", "Candidate",
-                                  "PersonSize", "Allocator"])
+                                  "PersonSize", "Allocator", "Point", "Line", "Zone", "Event",
+                                  "LineCount", "ZoneCount", "Occupant"])
 def test_struct_layout(layout, name):
     cls = getattr(_abi, name)
     want = layout[name]

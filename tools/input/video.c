@@ -8,6 +8,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #define Y4M_SIGNATURE "YUV4MPEG2 "
 /* The bytes read before deciding what the input is: Y4M's signature, or a
@@ -222,6 +223,50 @@ static int parse_y4m_header(video_input *in, video_info *info, char *err, size_t
     return 0;
 }
 
+/* The whole frames of a Y4M file of `size` bytes whose frames start at
+ * `pos`: each a FRAME line (with parameters or not) and frame_bytes of
+ * pixels. Read with pread(), so that the stream's position is kept. */
+static long long count_y4m_frames(int fd, long long pos, long long size, size_t frame_bytes)
+{
+    long long n = 0;
+    char line[Y4M_MAX_LINE];
+    while (pos < size) {
+        const ssize_t got = pread(fd, line, sizeof line, (off_t)pos);
+        const char *nl = got > 0 ? memchr(line, '\n', (size_t)got) : NULL;
+        if (!nl || strncmp(line, "FRAME", 5) != 0)
+            break;
+        pos += (nl - line) + 1 + (long long)frame_bytes;
+        if (pos > size)
+            break;
+        n++;
+    }
+    return n;
+}
+
+/* A regular file's frames into *frames (else it stays as it is). Returns
+ * 0, or -1 with a message when a raw file is no whole number of frames. */
+static int count_frames(const video_input *in, const char *path, long long *frames, char *err,
+                        size_t err_len)
+{
+    struct stat st;
+    if (fstat(fileno(in->f), &st) != 0 || !S_ISREG(st.st_mode))
+        return 0;
+    const long long total = (long long)st.st_size;
+    if (in->y4m) {
+        *frames = count_y4m_frames(fileno(in->f), in->header_bytes, total, in->frame_bytes);
+        return 0;
+    }
+    if (total % (long long)in->frame_bytes != 0) {
+        snprintf(err, err_len,
+                 "'%s' has %lld bytes, not a whole number of %dx%d frames of %zu "
+                 "bytes: check --size and --format",
+                 path, total, in->width, in->height, in->frame_bytes);
+        return -1;
+    }
+    *frames = total / (long long)in->frame_bytes;
+    return 0;
+}
+
 int video_open(const char *path, const video_params *params, video_input **out,
                   video_info *info, char *err, size_t err_len)
 {
@@ -300,23 +345,9 @@ int video_open(const char *path, const video_params *params, video_input **out,
         video_close(in);
         return -1;
     }
-    struct stat st;
-    if (in->y4m && !is_stdin && fstat(fileno(in->f), &st) == 0 && S_ISREG(st.st_mode))
-        info->frames = ((long long)st.st_size - in->header_bytes) /
-                       (long long)(strlen("FRAME\n") + in->frame_bytes);
-    if (!in->y4m && !is_stdin) {
-        if (fstat(fileno(in->f), &st) == 0 && S_ISREG(st.st_mode)) {
-            long long total = (long long)st.st_size;
-            if (total % (long long)in->frame_bytes != 0) {
-                snprintf(err, err_len,
-                         "'%s' has %lld bytes, not a whole number of %dx%d frames of %zu "
-                         "bytes: check --size and --format",
-                         path, total, in->width, in->height, in->frame_bytes);
-                video_close(in);
-                return -1;
-            }
-            info->frames = total / (long long)in->frame_bytes;
-        }
+    if (!is_stdin && count_frames(in, path, &info->frames, err, err_len) < 0) {
+        video_close(in);
+        return -1;
     }
     in->buf = malloc(in->frame_bytes);
     if (!in->buf) {

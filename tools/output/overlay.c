@@ -26,6 +26,14 @@ struct overlay_writer {
     long long frame;
     int has_size;
     ct_person_size size;
+    /* Counting (overlay_set_counting()): the caller's arrays. */
+    const ct_point (*ends)[2];
+    const ct_line_count *lc;
+    int nl;
+    const ct_point (*points)[CT_ZONE_MAX_POINTS];
+    const int *n_points;
+    const ct_zone_count *zc;
+    int nz;
 };
 
 /* 12 distinguishable colours as (Y, U, V), BT.601 limited range. */
@@ -218,6 +226,53 @@ static void draw_person_size(overlay_writer *ov)
     }
 }
 
+void overlay_set_counting(overlay_writer *ov, const ct_point (*ends)[2], const ct_line_count *lc,
+                          int nl, const ct_point (*points)[CT_ZONE_MAX_POINTS], const int *n,
+                          const ct_zone_count *zc, int nz)
+{
+    ov->ends = ends;
+    ov->lc = lc;
+    ov->nl = nl;
+    ov->points = points;
+    ov->n_points = n;
+    ov->zc = zc;
+    ov->nz = nz;
+}
+
+static void draw_counting(overlay_writer *ov)
+{
+    static const uint8_t orange[3] = {151, 42, 201}, green[3] = {112, 72, 58},
+                         cyan[3] = {170, 166, 16};
+    const int big = ov->h >= 400 ? 2 : 1;
+    for (int i = 0; i < ov->nz; i++) {
+        const ct_point *p = ov->points[i];
+        const int n = ov->n_points[i];
+        double cx = 0, cy = 0;
+        for (int k = 0; k < n; k++) {
+            const ct_point a = p[k], b = p[(k + 1) % n];
+            line(ov, clampi(a.x, -1, ov->w), clampi(a.y, -1, ov->h), clampi(b.x, -1, ov->w),
+                 clampi(b.y, -1, ov->h), cyan);
+            cx += a.x / n;
+            cy += a.y / n;
+        }
+        label(ov, clampi(cx, 0, ov->w - 8), clampi(cy, 0, ov->h - 8),
+              (uint64_t)ov->zc[i].inside, cyan, big);
+    }
+    for (int i = 0; i < ov->nl; i++) {
+        const ct_point a = ov->ends[i][0], b = ov->ends[i][1];
+        line(ov, clampi(a.x, -1, ov->w), clampi(a.y, -1, ov->h), clampi(b.x, -1, ov->w),
+             clampi(b.y, -1, ov->h), orange);
+        /* The right-hand side of a -> b, as the image shows it. */
+        const double len = hypot(b.x - a.x, b.y - a.y), off = 10 * big;
+        const double nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
+        const double mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2;
+        label(ov, clampi(mx + nx * off - 4 * big, 0, ov->w - 8),
+              clampi(my + ny * off - 3 * big, 0, ov->h - 8), ov->lc[i].in, green, big);
+        label(ov, clampi(mx - nx * off - 8 * big, 0, ov->w - 8),
+              clampi(my - ny * off - 4 * big, 0, ov->h - 8), ov->lc[i].out, orange, big);
+    }
+}
+
 int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tracks, size_t n,
                      const ct_candidate *cands, size_t nc, char *err, size_t err_len)
 {
@@ -225,6 +280,7 @@ int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tra
     copy_planes(ov, frame);
     if (ov->has_size)
         draw_person_size(ov);
+    draw_counting(ov);
     static const uint8_t red[3] = {82, 90, 240}, dark[3] = {16, 128, 128};
     for (size_t i = 0; i < nc; i++) {
         const ct_candidate *c = &cands[i];

@@ -27,6 +27,16 @@ int overlay_write(overlay_writer *ov, const ct_frame *frame, const ct_track *tra
  * feet are on that row, on the image's left and right edges. */
 void overlay_set_person_size(overlay_writer *ov, const ct_person_size *size);
 
+/* Draws counting lines (from ends[i][0] to ends[i][1]) and zones (the
+ * corners points[i][0..n[i]-1]) on the frames written from now on, with
+ * the counts in lc and zc (indexed alike; read at each write, so the
+ * caller keeps them current): a line in orange with its "in" count on its
+ * right-hand side and its "out" count on its left, a zone's edges in cyan
+ * with the people in it now at its centre. */
+void overlay_set_counting(overlay_writer *ov, const ct_point (*ends)[2], const ct_line_count *lc,
+                          int nl, const ct_point (*points)[CT_ZONE_MAX_POINTS], const int *n,
+                          const ct_zone_count *zc, int nz);
+
 /* Closes the file; returns -1 with a message if a write failed. */
 int overlay_close(overlay_writer *ov, char *err, size_t err_len);
 
