@@ -102,5 +102,13 @@ for t in $targets; do
     printf 'fuzz_%s: %s s, %s executions (%s a second), %s; line coverage of %s: %s\n' \
         "$t" "$seconds" "$execs" "$rate" "$cov" \
         "$(covered "$t")" "$lines" | tee "$work/$t.summary"
+    # The parts of lib/ that only scene-like frames reach (docs/robustness.md).
+    if [ "$t" = feed ]; then
+        cov_of() { python3 "$here/scripts/fuzz-coverage.py" "$build/tests/fuzz/fuzz_feed" \
+            "$work/feed.profdata" "$@"; }
+        printf 'fuzz_feed: blob merging and group splitting (blobs.cc): %s; the people'"'"'s size (person_size.cc): %s\n' \
+            "$(cov_of lib/pixels/blobs.cc merge_fragments split between_heads emptiest rows_of)" \
+            "$(cov_of lib/track/person_size.cc '*')" | tee -a "$work/$t.summary"
+    fi
 done
 exit $status

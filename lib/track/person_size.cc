@@ -129,18 +129,4 @@ double PersonSize::height_at(double y) const
     return std::min(kPriorMaxHeight, std::max(kLowest, slope_ * y + intercept_));
 }
 
-double PersonSize::min_height() const
-{
-    if (!known_)
-        return kPriorMinHeight;
-    return std::min(height_at(0), height_at(image_height_));
-}
-
-double PersonSize::max_height() const
-{
-    if (!known_)
-        return kPriorMaxHeight;
-    return std::max(height_at(0), height_at(image_height_));
-}
-
 } // namespace ctrack

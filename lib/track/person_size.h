@@ -35,10 +35,6 @@ public:
     // line's height at the mean feet row of what was observed (the bands
     // weighed as in the fit); 0 while unknown.
     double typical_height() const { return known_ ? typical_ : 0; }
-    // The smallest and largest height the model allows anywhere a person's
-    // feet may be (the prior's bounds while unknown).
-    double min_height() const;
-    double max_height() const;
     // The fitted line: height = slope * y + intercept (frame pixels), and the
     // samples behind it.
     double slope() const { return slope_; }

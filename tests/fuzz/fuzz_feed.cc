@@ -18,6 +18,11 @@
 //     confidence and scores in [0, 1], states, detection indices, votes);
 //   - the buffer-size protocol: too small a buffer copies nothing and tells
 //     the count needed.
+// One input in four is instead a street scene (scene.h): 320x240 frames of
+// people walking, in pairs and groups, crossing, stopping, in clothes the
+// colour of the ground, fed to trackers from the pixels alone (or
+// detections with pixels) for up to 160 frames, under the same checks, so
+// that blob merging, group splitting and the people's size are reached.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
@@ -31,6 +36,7 @@
 
 #include "ctrack/ctrack.h"
 #include "fuzz.h"
+#include "scene.h"
 
 namespace {
 
@@ -454,11 +460,82 @@ void add_counting(FuzzedDataProvider &in, ct_tracker *a, ct_tracker *b, const in
     CHECK(r == CT_OK || ct_tracker_last_error(a)[0] != '\0');
 }
 
+// A street scene (scene.h) through two trackers alike: from the pixels
+// alone (the contour template or size and aspect), or the figures' boxes as
+// detections with the pixels (verified or not), with a counting line and
+// zone, and now and then the fuzzer's bytes as noise on a frame.
+void run_scene(FuzzedDataProvider &in)
+{
+    ct_config cfg;
+    ct_config_default(&cfg, sizeof cfg);
+    const int mode = in.ConsumeIntegralInRange<int>(0, 3);
+    if (mode <= 1)
+        cfg.source = CT_SOURCE_PIXELS;
+    if (mode == 1)
+        cfg.pedestrian_test = CT_PEDESTRIAN_SIZE;
+    cfg.verify_detections = mode == 3;
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0)
+        cfg.candidate_min_score = in.ConsumeFloatingPointInRange<float>(0.3f, 1.0f);
+    ct_tracker *a = nullptr, *b = nullptr;
+    CHECK(ct_tracker_create(&cfg, &a) == CT_OK && ct_tracker_create(&cfg, &b) == CT_OK);
+    const scene::Script script = scene::read_script(in);
+    const int shape[2] = {scene::kWidth, scene::kHeight};
+    add_counting(in, a, b, shape);
+    std::vector<uint8_t> y(scene::kWidth * scene::kHeight),
+        u(scene::kWidth * scene::kHeight / 4), v(u.size());
+    std::vector<float> boxes;
+    ct_frame f;
+    ct_frame_default(&f, sizeof f);
+    f.format = CT_FORMAT_I420;
+    f.width = scene::kWidth;
+    f.height = scene::kHeight;
+    f.planes[0] = y.data();
+    f.planes[1] = u.data();
+    f.planes[2] = v.data();
+    f.strides[0] = scene::kWidth;
+    f.strides[1] = f.strides[2] = scene::kWidth / 2;
+    uint64_t max_id = 0;
+    // Long enough, now and then, for the people's size to halve its counts
+    // (a band holds 1,000 boxes at most).
+    const int frames = in.ConsumeIntegralInRange<int>(0, 15) == 0
+                           ? in.ConsumeIntegralInRange<int>(200, 500)
+                           : in.ConsumeIntegralInRange<int>(20, 100);
+    for (int t = 0; t < frames; t++) {
+        scene::render(script, t, y.data(), u.data(), v.data(), &boxes);
+        if (in.remaining_bytes() > 0 && in.ConsumeIntegralInRange<int>(0, 7) == 0) {
+            const std::vector<uint8_t> noise = in.ConsumeBytes<uint8_t>(64);
+            for (size_t k = 0; k < noise.size(); k++)
+                y[(k * 1031 + (size_t)t * 77) % y.size()] ^= noise[k];
+        }
+        f.timestamp_us += in.remaining_bytes() > 0 && in.ConsumeIntegralInRange<int>(0, 15) == 0
+                              ? 120000
+                              : 40000;
+        std::vector<ct_detection> dets;
+        if (cfg.source == CT_SOURCE_DETECTIONS)
+            for (size_t k = 0; k + 3 < boxes.size(); k += 4)
+                dets.push_back({boxes[k], boxes[k + 1], boxes[k + 2], boxes[k + 3], 0.9f, 0});
+        const ct_detection *dp = dets.empty() ? nullptr : dets.data();
+        CHECK(ct_tracker_feed(a, &f, dp, dets.size()) == CT_OK);
+        CHECK(ct_tracker_feed(b, &f, dp, dets.size()) == CT_OK);
+        const Output o = output_of(a);
+        CHECK(same(o, output_of(b)));
+        // From the pixels, a track's detection_index is its candidate's.
+        check_output(o, cfg, cfg.source == CT_SOURCE_PIXELS ? o.candidates.size() : dets.size(),
+                     &f, &max_id);
+    }
+    ct_tracker_destroy(a);
+    ct_tracker_destroy(b);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     FuzzedDataProvider in(data, size);
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) {
+        run_scene(in);
+        return 0;
+    }
     ct_config cfg;
     fuzz_config(in, &cfg);
     Sized cfg_as_passed;
