@@ -14,8 +14,7 @@
 #include <cstring>
 #include <vector>
 
-#include "video.h"
-#include "track/engine.h"
+#include "pixels_run.h"
 
 int main(int argc, char **argv)
 {
@@ -23,41 +22,14 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "usage: dump-blobs VIDEO.y4m OUT\n");
         return 2;
     }
-    char err[256];
-    video_input *in = nullptr;
-    video_info info;
-    video_params params = {};
-    if (video_open(argv[1], &params, &in, &info, err, sizeof err) != 0) {
-        std::fprintf(stderr, "dump-blobs: %s\n", err);
-        return 1;
-    }
     FILE *out = std::fopen(argv[2], "wb");
     if (!out) {
         std::perror(argv[2]);
-        video_close(in);
         return 1;
     }
-    ct_config cfg;
-    ct_config_default(&cfg, sizeof cfg);
-    cfg.source = CT_SOURCE_PIXELS;
-    ctrack::Engine engine(cfg);
-    const double rate = info.rate_num > 0 && info.rate_den > 0
-                            ? (double)info.rate_num / info.rate_den : 25.0;
-    ct_frame f;
     std::vector<uint8_t> crop;
-    int status = 0;
-    for (int32_t k = 1;; k++) {
-        const int r = video_read(in, &f, err, sizeof err);
-        if (r == 0)
-            break;
-        if (r < 0) {
-            std::fprintf(stderr, "dump-blobs: %s\n", err);
-            status = 1;
-            break;
-        }
-        f.timestamp_us = (int64_t)(k * 1e6 / rate);
-        engine.step(f.timestamp_us, ctrack::Planes::of(f), ctrack::ImageSize{f.width, f.height},
-                    nullptr, 0);
+    int status = run_pixels("dump-blobs", argv[1], [&](int k, const ctrack::Engine &engine,
+                                                        const ct_frame &) {
         int w, h;
         const uint8_t *mask = engine.foreground(&w, &h);
         const int s = engine.working_scale();
@@ -71,8 +43,7 @@ int main(int argc, char **argv)
             std::fwrite(head, sizeof head, 1, out);
             std::fwrite(crop.data(), 1, crop.size(), out);
         }
-    }
-    video_close(in);
+    });
     if (std::fclose(out) != 0) {
         std::perror(argv[2]);
         status = 1;

@@ -13,6 +13,7 @@
 
 #include "pixels/background.h"
 #include "pixels/blobs.h"
+#include "pixels/camera_motion.h"
 #include "template/classifier.h"
 #include "pixels/prime.h"
 
@@ -1093,6 +1094,39 @@ START_TEST(a_recordings_median_and_its_cleaned_frames)
 END_TEST
 END_TEST
 
+// The camera's motion from luma projections: a profile shifted by a few
+// samples is a camera that moved; the same profile with a few samples
+// changed (people walking) or scaled (the light) is not.
+START_TEST(camera_motion_from_projections)
+{
+    std::vector<int32_t> before(160), now(160);
+    unsigned seed = 7;
+    for (int32_t &v : before) {
+        seed = seed * 1103515245u + 12345u;
+        v = 20000 + (int32_t)((seed >> 16) % 6000);
+    }
+    for (int shift : {1, 3, -5, 8}) {
+        for (int i = 0; i < 160; i++)
+            now[i] = before[std::min(159, std::max(0, i - shift))];
+        ck_assert_msg(ctrack::profile_shifted(now.data(), before.data(), 160, 8), "shift %d",
+                      shift);
+    }
+    now = before;
+    for (int i = 60; i < 75; i++) // a person's columns
+        now[i] += 3000;
+    ck_assert(!ctrack::profile_shifted(now.data(), before.data(), 160, 8));
+    for (int i = 0; i < 160; i++) // the light, brighter by a tenth
+        now[i] = before[i] + before[i] / 10;
+    ck_assert(!ctrack::profile_shifted(now.data(), before.data(), 160, 8));
+    ck_assert(!ctrack::profile_shifted(before.data(), before.data(), 160, 8));
+    // Beyond the reach, or too short a profile to say: no motion seen.
+    for (int i = 0; i < 160; i++)
+        now[i] = before[std::min(159, std::max(0, i - 12))];
+    ck_assert(!ctrack::profile_shifted(now.data(), before.data(), 160, 8));
+    ck_assert(!ctrack::profile_shifted(now.data(), before.data(), 20, 8));
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -1104,6 +1138,7 @@ int main(int argc, char **argv)
     TCase *tc = tcase_create("background");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, small_divisions_are_exact);
+    tcase_add_test(tc, camera_motion_from_projections);
     tcase_add_loop_test(tc, a_recordings_median_and_its_cleaned_frames, 0, 4);
     tcase_add_test(tc, repeated_silhouettes_are_compared_once);
     tcase_add_test(tc, moving_square_is_foreground);

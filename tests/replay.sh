@@ -104,7 +104,10 @@ check "PETS09-S2L1, pixels only, primed (a look-ahead)" PETS09-S2L1 71.0 75.5 --
     "$pets"
 # shellcheck disable=SC2086
 check "TUD-Campus, pixels only" TUD-Campus $tud_floors -r 25 "$tmp/tud.y4m"
-check "TUD-Campus, pixels only, primed on the whole clip (a look-ahead)" TUD-Campus 49.0 63.0 \
+# Its boxes fitted to the silhouettes (refine_boxes) lose it 2 MOTA: five
+# boxes of 359 move under IoU 0.5 (docs/tuning.md, "Boxes fitted to the
+# silhouette").
+check "TUD-Campus, pixels only, primed on the whole clip (a look-ahead)" TUD-Campus 48.5 63.0 \
     --prime 3 -r 25 "$tmp/tud.y4m"
 # The frames cut by 2 pixels on each side (make eval's shift family): a
 # background column at the right edge stayed foreground, and its blob, 4 x

@@ -48,6 +48,7 @@ static const param_def params[] = {
     {"pedestrian_test", 'i', offsetof(ct_config, pedestrian_test), "pixels only: 0 the contour template, 1 size and aspect alone"},
     {"size_gate", 'f', offsetof(ct_config, size_gate), "detections this far (log ratio) from the people's height are ignored (0: none)"},
     {"confirm_score", 'f', offsetof(ct_config, confirm_score), "a track is confirmed once one of its detections scored this"},
+    {"refine_boxes", 'i', offsetof(ct_config, refine_boxes), "1: boxes fitted to the silhouette where the pixels are read"},
 };
 
 static void print_param_value(FILE *out, const ct_config *cfg, const param_def *p)

@@ -271,6 +271,24 @@ typedef struct ct_config {
      * confirmed after min_hits.
      * Default 0.95; range [0, 1]. */
     float confirm_score;
+
+    /* Added in 0.10.0. */
+
+    /* Wherever the tracker reads the pixels of a still camera (from the
+     * pixels alone, and with detections and frames), each reported box is
+     * fitted to the person's silhouette in the foreground: its centre
+     * moves 0.7 of the way toward the body's axis and toward the middle
+     * between the head's top and the feet; a detector's box much wider
+     * than the silhouette is narrowed to it, and with the people's size
+     * known a box cut short of a person's height grows to the feet. Where
+     * the silhouette does not show one person clearly (the background
+     * model's first second, a frame the camera moved, another track over
+     * a sixth of the box) the box is left as it is. With detections it
+     * makes the tracker keep a background model, about 0.2 ms a 768x576
+     * frame. 0 reports the boxes unfitted and, with detections, reads no
+     * background (docs/API.md, "Boxes fitted to the silhouette").
+     * Default 1; range [0, 1]. */
+    int32_t refine_boxes;
 } ct_config;
 
 /* Fills *cfg (of the caller's size `size`, normally sizeof *cfg) with the
@@ -585,9 +603,10 @@ typedef struct ct_person_size {
      * the size is known, then 1 while a typical person is under about 55
      * pixels tall (not with pedestrian_test = CT_PEDESTRIAN_SIZE), and 4
      * once the size rests on 200 boxes and a typical person is over about
-     * 160 (0 until a foreground was found: with detections and without
-     * verify_detections there is none). The memory for the pixels follows
-     * it: 4 times as much at 1. */
+     * 160 (0 until a foreground was found: with detections, frames
+     * without pixels, or refine_boxes and verify_detections both 0, there
+     * is none). The memory for the pixels follows it: 4 times as much at
+     * 1. */
     float typical_height;
     int32_t working_scale;
 } ct_person_size;

@@ -45,6 +45,7 @@ ct_config default_config()
     c.pedestrian_test = CT_PEDESTRIAN_TEMPLATE;
     c.size_gate = 0.35f;
     c.confirm_score = 0.95f;
+    c.refine_boxes = 1;
     return c;
 }
 
@@ -96,6 +97,7 @@ constexpr FieldRange kRanges[] = {
              "(CT_PEDESTRIAN_TEMPLATE or CT_PEDESTRIAN_SIZE)"),
     CT_FIELD(size_gate, 'f', 0, 10, false, false, nullptr, nullptr, ""),
     CT_FIELD(confirm_score, 'f', 0, 1, false, false, nullptr, nullptr, ""),
+    CT_FIELD(refine_boxes, 'i', 0, 1, false, false, nullptr, nullptr, "(0 or 1)"),
 };
 #undef CT_FIELD
 const FieldRange *range_of(const char *name)

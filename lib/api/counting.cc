@@ -47,6 +47,24 @@ int add_shape(ct_tracker *tracker, const T *in, T defaults, const char *name,
     return ctrack::guarded(tracker, [&] { return add(s, msg, len); });
 }
 
+// What the getters copy out.
+const ctrack::Vec<ct_event> &events_of(const ct_tracker &t)
+{
+    return t.engine.counter().events();
+}
+const ctrack::Vec<ct_line_count> &line_counts_of(const ct_tracker &t)
+{
+    return t.engine.counter().line_counts();
+}
+const ctrack::Vec<ct_zone_count> &zone_counts_of(const ct_tracker &t)
+{
+    return t.engine.counter().zone_counts();
+}
+const ctrack::Vec<ct_occupant> &occupants_of(const ct_tracker &t)
+{
+    return t.engine.counter().occupants();
+}
+
 // The last step's time, for the tracks already running when a line or a
 // zone is added.
 int64_t last_step(const ct_tracker *tracker)
@@ -81,7 +99,8 @@ int ct_tracker_add_line(ct_tracker *tracker, const ct_line *line, int32_t *index
 {
     return add_shape(tracker, line, default_line(), "line", "ct_line",
                      [&](const ct_line &l, char *msg, size_t len) {
-                         return tracker->engine.counter().add_line(l, last_step(tracker), index, msg, len);
+                         return tracker->engine.counter().add_line(l, last_step(tracker), index,
+                                                                   msg, len);
                      });
 }
 
@@ -89,36 +108,37 @@ int ct_tracker_add_zone(ct_tracker *tracker, const ct_zone *zone, int32_t *index
 {
     return add_shape(tracker, zone, default_zone(), "zone", "ct_zone",
                      [&](const ct_zone &z, char *msg, size_t len) {
-                         return tracker->engine.counter().add_zone(z, last_step(tracker), index, msg, len);
+                         return tracker->engine.counter().add_zone(z, last_step(tracker), index,
+                                                                   msg, len);
                      });
 }
 
 int ct_tracker_get_events(const ct_tracker *tracker, ct_event *out, size_t capacity,
                           size_t elem_size, size_t *count)
 {
-    return ctrack::copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.counter().events(); }, "event",
-                            sizeof(ct_event), out, capacity, elem_size, count);
+    return ctrack::copy_out(tracker, events_of, "event", sizeof(ct_event), out,
+                            capacity, elem_size, count);
 }
 
 int ct_tracker_get_line_counts(const ct_tracker *tracker, ct_line_count *out,
                                size_t capacity, size_t elem_size, size_t *count)
 {
-    return ctrack::copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.counter().line_counts(); }, "line_count",
-                            sizeof(ct_line_count), out, capacity, elem_size, count);
+    return ctrack::copy_out(tracker, line_counts_of, "line_count", sizeof(ct_line_count), out,
+                            capacity, elem_size, count);
 }
 
 int ct_tracker_get_zone_counts(const ct_tracker *tracker, ct_zone_count *out,
                                size_t capacity, size_t elem_size, size_t *count)
 {
-    return ctrack::copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.counter().zone_counts(); }, "zone_count",
-                            sizeof(ct_zone_count), out, capacity, elem_size, count);
+    return ctrack::copy_out(tracker, zone_counts_of, "zone_count", sizeof(ct_zone_count), out,
+                            capacity, elem_size, count);
 }
 
 int ct_tracker_get_occupants(const ct_tracker *tracker, ct_occupant *out, size_t capacity,
                              size_t elem_size, size_t *count)
 {
-    return ctrack::copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.counter().occupants(); }, "occupant",
-                            sizeof(ct_occupant), out, capacity, elem_size, count);
+    return ctrack::copy_out(tracker, occupants_of, "occupant", sizeof(ct_occupant), out,
+                            capacity, elem_size, count);
 }
 
 } // extern "C"

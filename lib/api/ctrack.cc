@@ -52,6 +52,16 @@ void step_frame(ct_tracker *tracker, const ct_frame &f, const ct_detection *dets
     tracker->feed_ns += validate_ns + convert_ns + sw.lap();
 }
 
+// What the getters copy out.
+const ctrack::Vec<ct_track> &tracks_of(const ct_tracker &t)
+{
+    return t.engine.reported();
+}
+const ctrack::Vec<ct_candidate> &candidates_of(const ct_tracker &t)
+{
+    return t.engine.candidates();
+}
+
 } // namespace
 
 extern "C" {
@@ -284,7 +294,7 @@ int ct_tracker_prime(ct_tracker *tracker, const ct_frame *const *frames, size_t 
 int ct_tracker_get_tracks(const ct_tracker *tracker, ct_track *out, size_t capacity,
                           size_t elem_size, size_t *count)
 {
-    return copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.reported(); }, "track", sizeof(ct_track), out,
+    return copy_out(tracker, tracks_of, "track", sizeof(ct_track), out,
                     capacity, elem_size, count);
 }
 
@@ -292,7 +302,7 @@ int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out, size
                               size_t elem_size, size_t *count)
 {
     // The first published ct_candidate (0.4.0) ended with region_distance.
-    return copy_out(tracker, [](const ct_tracker &t) -> auto & { return t.engine.candidates(); }, "candidate",
+    return copy_out(tracker, candidates_of, "candidate",
                     offsetof(ct_candidate, fill), out, capacity, elem_size, count);
 }
 

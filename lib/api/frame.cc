@@ -40,8 +40,9 @@ int load_frame(const ct_frame *in, ct_frame *out, char *msg, size_t msg_len)
     if (!in)
         return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "frame: NULL pointer");
     ct_frame f = default_frame();
-    if (const int st = explain_sized(read_sized(in, in->size, kFrameSizeV1, &f), in->size, kFrameSizeV1,
-                                     sizeof(ct_frame), "frame", "ct_frame", msg, msg_len))
+    if (const int st = explain_sized(read_sized(in, in->size, kFrameSizeV1, &f), in->size,
+                                     kFrameSizeV1, sizeof(ct_frame), "frame", "ct_frame", msg,
+                                     msg_len))
         return st;
 
     int planes;

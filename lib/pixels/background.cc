@@ -8,6 +8,7 @@
 #include "base/clock.h"
 #include "base/tunable.h"
 #include "dsp/cpu.h"
+#include "pixels/camera_motion.h"
 #include "pixels/mask.h"
 
 namespace ctrack {
@@ -70,6 +71,11 @@ CT_TUNABLE(kBlackBelow, "CTRACK_BLACK_BELOW", 16);
 constexpr int kVMinLowest = 10;
 
 } // namespace
+
+double Background::age_s(int64_t t_us) const
+{
+    return frames_ > 0 ? elapsed_s(t_us, start_us_) : 0.0;
+}
 
 Dsp Background::make_dsp()
 {
@@ -171,7 +177,10 @@ size_t Background::memory_bytes() const
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
-           line_dc_.capacity() + noise_samples_.memory_bytes();
+           line_dc_.capacity() + noise_samples_.memory_bytes() +
+           (columns_.capacity() + rows_.capacity() + old_columns_.capacity() +
+            old_rows_.capacity()) *
+               sizeof(int32_t);
 }
 
 void Background::swap_models()
@@ -180,6 +189,8 @@ void Background::swap_models()
     vy_.swap(old_vy_);
     mu_.swap(old_mu_);
     mv_.swap(old_mv_);
+    columns_.swap(old_columns_);
+    rows_.swap(old_rows_);
 }
 
 void Background::rollback()
@@ -204,6 +215,7 @@ void Background::rollback()
     last_us_ = old_dims_.last_us;
     noise_ = old_dims_.noise;
     set_gain(old_dims_.gain);
+    camera_moved_ = old_dims_.camera_moved;
     kept_ = false;
 }
 
@@ -306,8 +318,8 @@ Background::Update Background::prepare(const Planes &img, int scale, const Rect 
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
-    old_dims_ =
-        Dims{w_, h_, fw_, fh_, scale_, color_, frames_, start_us_, last_us_, noise_, gain_};
+    old_dims_ = Dims{w_,        h_,       fw_,    fh_,   scale_,         color_, frames_,
+                     start_us_, last_us_, noise_, gain_, camera_moved_};
     swap_models();
     kept_ = true;
     scale = std::min(std::max(scale, finest_), kMaxScale);
@@ -410,11 +422,19 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
     line_v_.resize(w);
     line_dy_.resize(w);
     line_dc_.resize(w);
+    columns_.assign(w, 0);
+    rows_.assign(h, 0);
     for (int y = 0; y < h; y++) {
         const uint8_t *iu, *iv;
         dsp_.bg_gather_row(gather(img, y, &iu, &iv));
         const size_t row = (size_t)y * w;
         const uint8_t *iy = line_y_.data();
+        int32_t sum = 0;
+        for (int x = 0; x < w; x++) {
+            columns_[x] += iy[x];
+            sum += iy[x];
+        }
+        rows_[y] = sum;
         const uint8_t *frozen_y = frozen_row(frozen, n_frozen, y);
         // The model before this frame: the old buffers, or on a (re)start
         // the image's own samples (and V at kBgVMax), or at a new scale the
@@ -463,6 +483,12 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     if (sample)
         noise_samples_.begin();
     update_rows(img, frozen, n_frozen, r, u, sample);
+    // The camera, against the frame before at the same scale and size.
+    constexpr int kReach = 8;
+    camera_moved_ = !u.restart && !u.rescale && old_columns_.size() == columns_.size() &&
+                    old_rows_.size() == rows_.size() &&
+                    (profile_shifted(columns_.data(), old_columns_.data(), w_, kReach) ||
+                     profile_shifted(rows_.data(), old_rows_.data(), h_, kReach));
     if (sample)
         noise_.end(noise_samples_, u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;

@@ -54,6 +54,11 @@ public:
     }
     // Whether a frame was learnt since the start or the last reset.
     bool started() const { return frames_ > 0; }
+    // How long the model has learnt at t_us (0 before it started).
+    double age_s(int64_t t_us) const;
+    // Whether the camera moved between the last two frames learnt
+    // (camera_motion.h): their luma's projections match better shifted.
+    bool camera_moved() const { return camera_moved_; }
     // The model as it was before the last apply() (and absorb()) is kept
     // until commit(): rollback() returns to it, so that a step that fails
     // after the update leaves the model untouched. Both are O(1) and never
@@ -139,8 +144,13 @@ private:
         int64_t start_us, last_us;
         NoiseLevel noise;
         double gain;
+        bool camera_moved;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    // The luma's column and row sums of this frame and the one before
+    // (swapped with the model), and what they say of the camera.
+    Vec<int32_t> columns_, rows_, old_columns_, old_rows_;
+    bool camera_moved_ = false;
     // The old model resampled to a new scale, for the one update that
     // changes it (released after).
     Vec<uint8_t> rs_my_, rs_vy_, rs_mu_, rs_mv_;

@@ -102,15 +102,6 @@ Rect foreground_bounds(const uint8_t *mask, int w, int h)
     return r;
 }
 
-// Non-zero bytes among n.
-int count_nonzero(const uint8_t *p, int n)
-{
-    int c = 0;
-    for (int i = 0; i < n; i++)
-        c += p[i] != 0;
-    return c;
-}
-
 } // namespace
 
 struct BlobFinder::Impl {

@@ -5,6 +5,7 @@
 
 #include "base/clock.h"
 #include "base/tunable.h"
+#include "pixels/box_fit.h"
 
 namespace ctrack {
 
@@ -194,6 +195,40 @@ void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &
         dets_.push_back(v);
     }
     counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+void PixelCandidates::mask_only(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                                const PersonSize &size, Counters &counters)
+{
+    Stopwatch sw;
+    update_background(t_us, img, tracks, size, Background::kMinScale);
+    counters.stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
+    blobs_.clean(background_.mask(), background_.width(), background_.height());
+    have_mask_ = true;
+    counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
+}
+
+bool PixelCandidates::silhouettes_clear(int64_t t_us) const
+{
+    // Twice the model's fast start (background.cc): the people of the
+    // first frames are out of it. A camera that moved has its background
+    // in the wrong place, and a mask over a quarter foreground is no
+    // picture of a few people.
+    constexpr double kLearntFor = 1.0, kMaxForegroundShare = 0.25;
+    if (!have_mask_ || background_.age_s(t_us) < kLearntFor || background_.camera_moved())
+        return false;
+    const int w = background_.width(), h = background_.height();
+    long fg = 0;
+    const uint8_t *m = blobs_.cleaned();
+    for (int y = 0; y < h; y++)
+        fg += count_nonzero(m + (size_t)y * w, w);
+    return fg <= kMaxForegroundShare * w * h;
+}
+
+bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool narrow, Box *out) const
+{
+    return have_mask_ && fit_box(blobs_.cleaned(), background_.width(), background_.height(),
+                                 background_.scale(), b, kFitFollow, &size, narrow, out);
 }
 
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const

@@ -38,6 +38,17 @@ public:
                 const ct_detection *dets, size_t n, const PersonSize &size,
                 Counters &counters, Vec<ct_candidate> &out);
 
+    // Only the frame's foreground: the background model's update and the
+    // mask's cleaning (for fit(), with a detector's boxes).
+    void mask_only(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
+                   const PersonSize &size, Counters &counters);
+    // Whether this step's mask shows silhouettes clearly enough to fit
+    // boxes to (box_fit.h): the model has learnt for a while, and the frame
+    // is not mostly foreground (a moving camera, a light switched).
+    bool silhouettes_clear(int64_t t_us) const;
+    // Box b fitted to this step's silhouette (fit_box()), or false.
+    bool fit(const Box &b, const PersonSize &size, bool narrow, Box *out) const;
+
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.

@@ -21,6 +21,15 @@ inline int pixel_int(double v)
     return (int)(v > -536870912.0 ? (v < 536870912.0 ? v : 536870912.0) : -536870912.0);
 }
 
+// Non-zero bytes among p[0..n-1].
+inline int count_nonzero(const uint8_t *p, int n)
+{
+    int c = 0;
+    for (int i = 0; i < n; i++)
+        c += p[i] != 0;
+    return c;
+}
+
 // Whether pixel (x, y) of the mask (rows of `stride` bytes) is on the
 // outline of the foreground inside the box [x0, x1) x [y0, y1), which lies
 // within the mask: foreground, with a 4-neighbour that is background or

@@ -388,6 +388,11 @@ bool Engine::find_candidates(int64_t scene_us, const Planes &img, const ct_detec
         *dets = pixels_.dets().data();
         return true;
     }
+    // The boxes are fitted to the silhouettes: the background is read.
+    if (cfg_.refine_boxes && !img.empty()) {
+        pixels_.mask_only(scene_us, img, state_.tracks, state_.learnt.size, state_.counters);
+        return true;
+    }
     return false;
 }
 
@@ -500,6 +505,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     ns[CT_STAGE_PREDICT] += sw.lap();
     if (find_candidates(time.scene_us, img, &dets, &n))
         sw.lap(); // its stages counted themselves
+    fit_boxes_ = cfg_.refine_boxes && pixels_.silhouettes_clear(time.scene_us);
     if (pixels) {
         refine(img);
         ns[CT_STAGE_MEAN_SHIFT] += sw.lap();
@@ -626,7 +632,6 @@ void Engine::report(int64_t t_us, ImageSize image)
         o.top = (float)b.top;
         o.width = (float)b.width;
         o.height = (float)b.height;
-        pixels_.barycenter(b, &o.barycenter_x, &o.barycenter_y);
         o.velocity_x = (float)t.cx.v;
         o.velocity_y = (float)t.cy.v;
         double conf = std::min(1.0, std::max(0.0, (double)t.score));
@@ -643,8 +648,50 @@ void Engine::report(int64_t t_us, ImageSize image)
         o.class_id = t.class_id;
         state_.reported.push_back(o);
     }
+    if (fit_boxes_)
+        fit_reported();
+    for (ct_track &o : state_.reported)
+        pixels_.barycenter(Box{o.left, o.top, o.width, o.height}, &o.barycenter_x,
+                           &o.barycenter_y);
     std::sort(state_.reported.begin(), state_.reported.end(),
               [](const ct_track &a, const ct_track &b) { return a.id < b.id; });
+}
+
+void Engine::fit_reported()
+{
+    // Where another track covers more than this of a box, its silhouette
+    // is not its own.
+    constexpr double kMaxCovered = 1.0 / 6;
+    Vec<ct_track> &rows = state_.reported;
+    // A detector's boxes are often looser than a person; the pixels' own
+    // are the blobs' extents already.
+    const bool narrow = cfg_.source == CT_SOURCE_DETECTIONS;
+    auto box_of = [](const ct_track &o) { return Box{o.left, o.top, o.width, o.height}; };
+    // Each box is fitted against the others as they were before the fit:
+    // the fitted ones are written once all are known.
+    fitted_.resize(rows.size());
+    for (size_t i = 0; i < rows.size(); i++) {
+        const Box b = box_of(rows[i]);
+        bool covered = false;
+        for (size_t j = 0; j < rows.size() && !covered; j++) {
+            if (j == i)
+                continue;
+            const Box o = box_of(rows[j]);
+            const double ix = std::min(b.left + b.width, o.left + o.width) -
+                              std::max(b.left, o.left);
+            const double iy = std::min(b.top + b.height, o.top + o.height) -
+                              std::max(b.top, o.top);
+            covered = ix > 0 && iy > 0 && ix * iy > kMaxCovered * b.width * b.height;
+        }
+        if (covered || !pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]))
+            fitted_[i] = b;
+    }
+    for (size_t i = 0; i < rows.size(); i++) {
+        rows[i].left = (float)fitted_[i].left;
+        rows[i].top = (float)fitted_[i].top;
+        rows[i].width = (float)fitted_[i].width;
+        rows[i].height = (float)fitted_[i].height;
+    }
 }
 
 } // namespace ctrack

@@ -187,6 +187,9 @@ private:
     // report_lost_sd of its size.
     bool hidden_in_view(const Track &t, size_t i) const;
     void report(int64_t t_us, ImageSize image);
+    // The reported boxes fitted to the silhouettes (refine_boxes), each
+    // that another does not cover.
+    void fit_reported();
     // A track's reported box: its estimate, drawn toward its detection
     // where the scene moves less predictably than the filter assumes, and
     // clipped to the image when asked; false when clipping leaves nothing.
@@ -212,6 +215,7 @@ private:
     // with the pixels' candidates, for which it is never learnt.
     float confirm_ = 0;
     bool appearance_ = false; // this step
+    bool fit_boxes_ = false;  // this step: the reported boxes are fitted
     TemplateBank bank_;
     PixelCandidates pixels_;
     // Counting runs last in a step: it changes nothing unless the step is
@@ -225,6 +229,7 @@ private:
     Assigner assigner_;
     Vec<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     Vec<char> det_used_;
+    Vec<Box> fitted_; // fit_reported()'s
 };
 
 } // namespace ctrack

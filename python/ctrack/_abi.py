@@ -81,6 +81,7 @@ class Config(C.Structure):
         ("pedestrian_test", C.c_int32),
         ("size_gate", C.c_float),
         ("confirm_score", C.c_float),
+        ("refine_boxes", C.c_int32),  # 0.10.0
     ]
 
 

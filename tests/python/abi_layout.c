@@ -27,6 +27,7 @@ int main(void)
     FIELD(ct_config, report_lost_sd); FIELD(ct_config, pedestrian_test);
     FIELD(ct_config, size_gate);
     FIELD(ct_config, confirm_score);
+    FIELD(ct_config, refine_boxes);
     first = 0;
     printf("}, \"Frame\": {\"sizeof\": %zu, ", sizeof(ct_frame));
     FIELD(ct_frame, size); FIELD(ct_frame, format); FIELD(ct_frame, width);

@@ -365,7 +365,9 @@ def test_person_size_is_learnt(tud_bgr):
         assert 0.25 <= p["width_ratio"] <= 0.6
         t.reset()
         assert 150 <= p["typical_height"] <= 320
-        assert p["working_scale"] == 0  # detections, not verified: no foreground
+        # Detections with frames: the boxes are fitted to the silhouettes
+        # (refine_boxes), so a foreground is found.
+        assert p["working_scale"] in (1, 2, 4)
         t.reset()
         assert t.person_size() == {"known": False, "height_slope": 0.0,
                                    "height_intercept": 0.0, "width_ratio": 0.0, "samples": 0,
@@ -414,3 +416,22 @@ def test_image_size_for_steps_without_pixels():
     for bad in ((200,), (200, -1), (200.0, 300), "wide"):
         with pytest.raises(ValueError, match="image_size"):
             ctrack.Tracker(image_size=bad)
+
+
+def test_refine_boxes_off_reads_no_background(tud_bgr):
+    """With detections and frames, refine_boxes=0 keeps no background model
+    (no foreground, no working scale) and reports the filter's boxes; on,
+    the boxes move to the silhouettes and a foreground is found."""
+    frames, fps = tud_bgr
+    dets = load_dets("TUD-Campus")
+    out = {}
+    for refine in (0, 1):
+        with ctrack.Tracker(fps=fps, refine_boxes=refine) as t:
+            assert t.config["refine_boxes"] == refine
+            for k, f in enumerate(frames):
+                tracks = t.feed(f, dets.get(k + 1, np.zeros((0, 5))))
+            out[refine] = (t.person_size()["working_scale"], tracks)
+    assert out[0][0] == 0 and out[1][0] in (1, 2, 4)
+    a, b = out[0][1], out[1][1]
+    assert len(a) > 0 and list(a["id"]) == list(b["id"])
+    assert not np.array_equal(a["left"], b["left"])

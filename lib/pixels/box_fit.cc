@@ -1,0 +1,201 @@
+#include "pixels/box_fit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pixels/mask.h"
+
+namespace ctrack {
+
+namespace {
+
+// Constants of the fit, chosen on both sequences with frames
+// (docs/tuning.md, "Boxes fitted to the silhouette").
+// The search reaches this share of the box's width and height beyond it.
+constexpr double kReach = 0.1;
+// The body's axis: the median column of the foreground in the rows from
+// kAxisTop to kAxisBottom of the box (the torso, not the swinging legs);
+// the head is sought within kHeadBand box heights of it (a head is about
+// a tenth of a person's height across), the feet within kAxisBand.
+constexpr double kAxisTop = 0.1, kAxisBottom = 0.6, kHeadBand = 0.05, kAxisBand = 0.1;
+// The head's top: the first row whose share of foreground on the axis
+// reaches kHeadFill; the feet: the last that reaches kFeetFill.
+constexpr double kHeadFill = 0.3, kFeetFill = 0.2;
+// The box holds one person's silhouette clearly when its foreground share
+// is in [kMinFill, kMaxFill]; the head-to-feet extent is taken when it is
+// kMinHeight to kMaxHeight of the box's height.
+constexpr double kMinFill = 0.3, kMaxFill = 0.85;
+constexpr double kMinHeight = 0.8, kMaxHeight = 1.25;
+// A head found farther than kHeadSlack box heights from the box's top is
+// not this person's top (a group's, a blob in pieces): no move up or down.
+constexpr double kHeadSlack = 0.15;
+// With the people's size known: a box under kCut of the height a person
+// whose head is at its top has is cut (a coat the colour of the ground, an
+// occluder), and grows to the feet found below within kFeetReach of that
+// height, or to that height.
+constexpr double kCut = 0.75, kFeetReach = 1.2;
+// The silhouette's width: the columns around the axis in which at least
+// kColumnFill of the box's rows are foreground (its arms and legs in
+// stride included). A box wider than kWidthMargin times that is narrowed
+// to it: a detector's boxes are often looser than a person.
+constexpr double kColumnFill = 0.1, kWidthMargin = 1.2;
+constexpr int kMaxColumns = 1024;
+
+// The first column at which the running sum of counts[0..n-1] reaches
+// `share` of `total` (n > 0, a positive total).
+int share_column(const int *counts, int n, long total, double share)
+{
+    long sum = 0;
+    for (int x = 0; x < n; x++) {
+        sum += counts[x];
+        if (sum >= share * total)
+            return x;
+    }
+    return n - 1;
+}
+
+// The mask's rows and columns as the fit reads them.
+struct View {
+    const uint8_t *mask;
+    int w, h;
+    double s;
+    // The share of foreground in row y between columns c0 and c1.
+    double share(int y, int c0, int c1) const
+    {
+        return (double)count_nonzero(mask + (size_t)y * w + c0, c1 - c0) / (c1 - c0);
+    }
+    int col(double v) const { return std::min(w, std::max(0, (int)v)); }
+    int row(double v) const { return std::min(h, std::max(0, (int)v)); }
+};
+
+// The last row in [y0, y1) whose share on the axis reaches kFeetFill, or -1.
+int feet_row(const View &v, int y0, int y1, int c0, int c1)
+{
+    int last = -1;
+    for (int y = y0; y < y1; y++)
+        if (v.share(y, c0, c1) >= kFeetFill)
+            last = y;
+    return last;
+}
+
+// With the people's size: a cut box grown to the feet, or to the height a
+// person whose head is at its top has.
+void grow_cut(const View &v, const PersonSize &size, int c0, int c1, Box *b)
+{
+    const double slope = size.slope();
+    if (!size.known() || slope >= 1)
+        return;
+    const double head = b->top;
+    const double tall = (slope * head + size.intercept()) / (1 - slope);
+    if (tall > 0 && b->height < kCut * tall) {
+        const int feet = feet_row(v, v.row((head + kCut * tall) / v.s),
+                                  v.row((head + kFeetReach * tall) / v.s), c0, c1);
+        b->top = head;
+        b->height = feet >= 0 ? (feet + 1) * v.s - head : tall;
+    }
+}
+
+// The width of the silhouette around column `axis`: its columns in [x0,
+// x1) holding foreground in at least kColumnFill of rows [y0, y1),
+// contiguous with the axis (frame pixels; 0 when the axis holds none).
+double silhouette_width(const View &v, int x0, int x1, int y0, int y1, int axis)
+{
+    auto solid = [&](int x) {
+        int n = 0;
+        for (int y = y0; y < y1; y++)
+            n += v.mask[(size_t)y * v.w + x] != 0;
+        return n >= kColumnFill * (y1 - y0);
+    };
+    if (!solid(axis))
+        return 0;
+    int lo = axis, hi = axis;
+    while (lo > x0 && solid(lo - 1))
+        lo--;
+    while (hi + 1 < x1 && solid(hi + 1))
+        hi++;
+    return (hi - lo + 1) * v.s;
+}
+
+} // namespace
+
+bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
+             const PersonSize *size, bool narrow, Box *out)
+{
+    if (!(b.width > 0 && b.height > 0) || scale < 1)
+        return false;
+    const View v{mask, w, h, (double)scale};
+    // The box and the reach around it, in working pixels, clipped.
+    const int x0 = v.col(std::floor((b.left - kReach * b.width) / v.s));
+    const int x1 = v.col(std::ceil((b.left + (1 + kReach) * b.width) / v.s));
+    const int y0 = v.row(std::floor((b.top - kReach * b.height) / v.s));
+    const int y1 = v.row(std::ceil((b.top + (1 + kReach) * b.height) / v.s));
+    const int bx0 = v.col(std::floor(b.left / v.s));
+    const int bx1 = v.col(std::ceil((b.left + b.width) / v.s));
+    const int by0 = v.row(std::floor(b.top / v.s));
+    const int by1 = v.row(std::ceil((b.top + b.height) / v.s));
+    if (x1 - x0 < 4 || y1 - y0 < 6 || bx1 <= bx0 || by1 <= by0 || x1 - x0 > kMaxColumns)
+        return false;
+    // One person, clearly: neither a fragment nor a filled block.
+    long inside = 0;
+    for (int y = by0; y < by1; y++)
+        inside += count_nonzero(mask + (size_t)y * w + bx0, bx1 - bx0);
+    const double fill = (double)inside / ((double)(bx1 - bx0) * (by1 - by0));
+    if (fill < kMinFill || fill > kMaxFill)
+        return false;
+    // The body's axis and width, from the torso's rows.
+    int counts[kMaxColumns] = {};
+    long total = 0;
+    const int ay0 = by0 + (int)(kAxisTop * (by1 - by0));
+    const int ay1 = std::max(ay0 + 1, by0 + (int)(kAxisBottom * (by1 - by0)));
+    for (int y = ay0; y < ay1; y++) {
+        const uint8_t *r = mask + (size_t)y * w;
+        for (int x = x0; x < x1; x++)
+            if (r[x]) {
+                counts[x - x0]++;
+                total++;
+            }
+    }
+    if (total < 5)
+        return false;
+    const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
+    // The head's top and the feet on the axis.
+    const int head_band = std::max(1, (int)(kHeadBand * b.height / v.s));
+    const int band = std::max(1, (int)(kAxisBand * b.height / v.s));
+    const int c0 = std::max(x0, axis - band), c1 = std::min(x1, axis + band + 1);
+    const int h0 = std::max(x0, axis - head_band), h1 = std::min(x1, axis + head_band + 1);
+    int top = -1;
+    for (int y = y0; y < y1 && top < 0; y++)
+        if (v.share(y, h0, h1) >= kHeadFill)
+            top = y;
+    const int bottom = top < 0 ? -1 : feet_row(v, top, y1, c0, c1);
+    if (top < 0 || bottom < top)
+        return false;
+    Box sized = b;
+    if (size)
+        grow_cut(v, *size, c0, c1, &sized);
+    const double sil_w = narrow ? silhouette_width(v, x0, x1, by0, by1, axis) : 0;
+    if (sil_w > 0 && sized.width > kWidthMargin * sil_w) {
+        sized.left += (sized.width - kWidthMargin * sil_w) / 2;
+        sized.width = kWidthMargin * sil_w;
+    }
+    // A person the image's edge cuts has no silhouette's centre across it:
+    // the box stays where it is in that direction.
+    const bool cut_side = b.left < 0 || b.left + b.width > w * v.s;
+    const bool cut_foot = bottom >= h - 1 || b.top + b.height > h * v.s;
+    const double axis_x = (axis + 0.5) * v.s, head_y = top * v.s;
+    const double cx = cut_side ? b.left + b.width / 2 : axis_x;
+    const double tall = (bottom + 1 - top) * v.s;
+    const bool head_near = std::fabs(head_y - b.top) <= kHeadSlack * b.height;
+    const double cy = sized.height != b.height ? sized.top + sized.height / 2
+                      : !cut_foot && head_near && tall >= kMinHeight * b.height &&
+                                tall <= kMaxHeight * b.height
+                          ? (top + bottom + 1) * v.s / 2
+                          : b.top + b.height / 2;
+    *out = sized;
+    out->left += follow * (cx - (sized.left + sized.width / 2));
+    out->top = sized.height != b.height ? sized.top
+                                        : b.top + follow * (cy - (b.top + b.height / 2));
+    return true;
+}
+
+} // namespace ctrack

@@ -1,0 +1,227 @@
+/* Boxes fitted to the silhouette (ct_config.refine_boxes), on synthetic
+ * frames with a detector's boxes: a box cut at the chest, where the coat is
+ * the colour of the ground, grows to the feet; a box 30% too wide is
+ * narrowed; on a camera that pans, the boxes are as without the fit. */
+#include <math.h>
+#include <stdbool.h>
+#include <stdlib.h>
+
+#include "common.h"
+
+#define W 320
+#define H 240
+#define SEC 1000000LL
+#define STEP (SEC / 25)
+
+typedef struct {
+    double x, feet, height, speed; /* centre, feet row, pixels; pixels a frame */
+    int enter;                     /* the frame it comes in */
+    bool coat_like_ground;         /* from 0.4 to 0.75 of its height */
+    double box_cut;                /* the detector's box covers this share of its height */
+    double box_wide;               /* ... and this times its width */
+    double box_shift;              /* ... moved this many widths to the right */
+} person;
+
+/* A street: slabs of irregular widths and greys, a kerb, grain. */
+static uint8_t ground(int x, int y, int pan)
+{
+    x += pan;
+    const unsigned slab = (unsigned)(x >= 0 ? x : -x) / 11, row = (unsigned)y / 9;
+    const unsigned grey = (slab * 2654435761u ^ row * 40503u) >> 26; /* 0 to 63 */
+    return (uint8_t)(80 + grey + (y > 120 ? 20 : 0) + ((x * 7 + y * 3) & 3));
+}
+
+/* Whether (x, y) is on p; *coat when on its coat. */
+static bool on_person(const person *p, double cx, double x, double y, bool *coat)
+{
+    const double h = p->height, top = p->feet - h, dy = y - top, dx = x - cx;
+    *coat = false;
+    if (dy < 0 || dy > h)
+        return false;
+    const double head = 0.06 * h;
+    if (dy < 2 * head)
+        return dx * dx + (dy - head) * (dy - head) < head * head;
+    if (dy < 0.75 * h) {
+        *coat = dy > 0.4 * h;
+        return fabs(dx) < (dy < 0.2 * h ? 0.11 : 0.14) * h;
+    }
+    return fabs(dx - 0.04 * h) < 0.045 * h || fabs(dx + 0.04 * h) < 0.045 * h;
+}
+
+/* The person's silhouette width (its torso): what a true box is about. */
+static double width_of(const person *p) { return 0.3 * p->height; }
+
+static double centre_at(const person *p, int k) { return p->x + p->speed * (k - p->enter); }
+
+/* Frame k: the ground panned by `pan` pixels a frame, the people in view;
+ * their detections (true boxes, cut or widened as each says) into d. */
+static size_t render(const person *ps, int n, int k, int pan, uint8_t *y, uint8_t *u, uint8_t *v,
+                     ct_detection *d)
+{
+    for (int r = 0; r < H; r++)
+        for (int c = 0; c < W; c++)
+            y[r * W + c] = ground(c, r, pan * k);
+    for (int i = 0; i < W / 2 * H / 2; i++)
+        u[i] = v[i] = 128;
+    size_t nd = 0;
+    for (int i = 0; i < n; i++) {
+        const person *p = &ps[i];
+        if (k < p->enter)
+            continue;
+        const double cx = centre_at(p, k);
+        for (int r = 0; r < H; r++)
+            for (int c = 0; c < W; c++) {
+                bool coat;
+                if (!on_person(p, cx, c + 0.5, r + 0.5, &coat))
+                    continue;
+                if (coat && p->coat_like_ground)
+                    continue;
+                y[r * W + c] = (uint8_t)(20 + 8 * i);
+                u[(r / 2) * (W / 2) + c / 2] = (uint8_t)(100 + 10 * i);
+            }
+        const double bw = width_of(p) * p->box_wide, bh = p->height * p->box_cut;
+        d[nd++] = test_det((float)(cx - bw / 2 + p->box_shift * width_of(p)),
+                           (float)(p->feet - p->height), (float)bw, (float)bh, 0.99f);
+    }
+    return nd;
+}
+
+/* Runs the scene for `frames` frames with detections and pixels, the fit on
+ * or off; the last step's tracks into out (returns their count). */
+static size_t run(const person *ps, int n, int frames, int pan, int refine, ct_track *out)
+{
+    ct_config cfg = test_config();
+    cfg.refine_boxes = refine;
+    ct_tracker *t = test_tracker(&cfg);
+    static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
+    ct_detection d[16];
+    size_t count = 0;
+    for (int k = 0; k < frames; k++) {
+        const size_t nd = render(ps, n, k, pan, y, u, v, d);
+        ct_frame f = test_frame(k * STEP, W, H);
+        f.format = CT_FORMAT_I420;
+        f.planes[0] = y;
+        f.planes[1] = u;
+        f.planes[2] = v;
+        f.strides[0] = W;
+        f.strides[1] = f.strides[2] = W / 2;
+        ck_assert_msg(ct_tracker_feed(t, &f, d, nd) == CT_OK, "%s", ct_tracker_last_error(t));
+        ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);
+    }
+    ct_tracker_destroy(t);
+    return count;
+}
+
+/* The track whose box centre is nearest x. */
+static const ct_track *near_x(const ct_track *tr, size_t n, double x)
+{
+    const ct_track *best = NULL;
+    for (size_t i = 0; i < n; i++)
+        if (!best || fabs(tr[i].left + tr[i].width / 2 - x) <
+                         fabs(best->left + best->width / 2 - x))
+            best = &tr[i];
+    ck_assert_ptr_nonnull(best);
+    return best;
+}
+
+/* People at several depths in the left half who teach the tracker their
+ * size (true boxes), walking slowly; the one under test comes in on the
+ * right, alone. */
+static int crowd(person *ps)
+{
+    const double feet[] = {150, 180, 210, 235};
+    for (int i = 0; i < 4; i++) {
+        ps[i] = (person){.x = 12 + 42 * i, .feet = feet[i], .height = 0.7 * feet[i] - 40,
+                         .speed = 0.2, .enter = 0, .box_cut = 1, .box_wide = 1};
+    }
+    return 4;
+}
+
+START_TEST(cut_at_the_chest_grows_to_the_feet)
+{
+    person ps[6];
+    int n = crowd(ps);
+    /* In from frame 60, its coat the ground's colour, its box cut there. */
+    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
+                       .enter = 60, .coat_like_ground = true, .box_cut = 0.45, .box_wide = 1};
+    ct_track on[16], off[16];
+    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
+    const double x = centre_at(&ps[n - 1], 89);
+    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    const double tall = ps[n - 1].height;
+    /* Unfitted: the cut box. Fitted: head to feet. */
+    ck_assert_float_le(raw->height, 0.6 * tall);
+    ck_assert_msg(fabs(fit->height - tall) < 0.15 * tall, "fitted height %g, person %g",
+                  fit->height, tall);
+    ck_assert_msg(fabs(fit->top - (ps[n - 1].feet - tall)) < 0.1 * tall, "top %g", fit->top);
+}
+END_TEST
+
+START_TEST(too_wide_is_narrowed)
+{
+    person ps[6];
+    int n = crowd(ps);
+    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
+                       .enter = 60, .box_cut = 1, .box_wide = 1.3};
+    ct_track on[16], off[16];
+    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
+    const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
+    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    ck_assert_float_ge(raw->width, 1.25 * w);
+    ck_assert_msg(fit->width <= 1.15 * w && fit->width >= 0.7 * w, "fitted width %g, person %g",
+                  fit->width, w);
+}
+END_TEST
+
+START_TEST(a_moving_camera_is_left_alone)
+{
+    /* The ground pans 4 pixels a frame: the boxes are as without the fit,
+     * to the bit. */
+    person ps[6];
+    int n = crowd(ps);
+    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
+                       .enter = 0, .box_cut = 0.45, .box_wide = 1.3};
+    ct_track on[16], off[16];
+    const size_t a = run(ps, n, 90, 4, 1, on), b = run(ps, n, 90, 4, 0, off);
+    ck_assert_uint_eq(a, b);
+    ck_assert_uint_gt(a, 0);
+    for (size_t i = 0; i < a; i++) {
+        ck_assert_float_eq(on[i].left, off[i].left);
+        ck_assert_float_eq(on[i].top, off[i].top);
+        ck_assert_float_eq(on[i].width, off[i].width);
+        ck_assert_float_eq(on[i].height, off[i].height);
+    }
+}
+END_TEST
+
+START_TEST(a_box_to_the_side_moves_to_the_person)
+{
+    /* A detector whose boxes sit a fifth of a person's width to the right:
+     * the fit moves them most of the way back; without it they stay. */
+    person ps[6];
+    int n = crowd(ps);
+    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
+                       .enter = 60, .box_cut = 1, .box_wide = 1, .box_shift = 0.2};
+    ct_track on[16], off[16];
+    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
+    const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
+    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    const double raw_off = raw->left + raw->width / 2 - x;
+    const double fit_off = fit->left + fit->width / 2 - x;
+    ck_assert_msg(raw_off > 0.15 * w, "unfitted %g off", raw_off);
+    ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted %g off, unfitted %g", fit_off, raw_off);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("fit");
+    TCase *tc = tcase_create("fit");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, cut_at_the_chest_grows_to_the_feet);
+    tcase_add_test(tc, too_wide_is_narrowed);
+    tcase_add_test(tc, a_moving_camera_is_left_alone);
+    tcase_add_test(tc, a_box_to_the_side_moves_to_the_person);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+}
