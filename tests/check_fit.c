@@ -213,6 +213,47 @@ START_TEST(a_box_to_the_side_moves_to_the_person)
 }
 END_TEST
 
+START_TEST(clipped_boxes_stay_in_the_image)
+{
+    /* clip_boxes: a fitted box is clipped again, never moved out of the
+     * image (a person at its right edge, a detector's box to its side). */
+    person ps[6];
+    int n = crowd(ps);
+    for (int i = 0; i < n; i++) /* the crowd on the right */
+        ps[i].x += 150;
+    ps[n++] = (person){.x = 14, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.05,
+                       .enter = 0, .box_cut = 1, .box_wide = 1, .box_shift = -0.4};
+    ct_config cfg = test_config();
+    cfg.clip_boxes = 1;
+    ct_tracker *t = test_tracker(&cfg);
+    static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
+    ct_detection d[16];
+    ct_track out[16];
+    size_t count = 0, seen = 0;
+    for (int k = 0; k < 90; k++) {
+        const size_t nd = render(ps, n, k, 0, y, u, v, d);
+        ct_frame f = test_frame(k * STEP, W, H);
+        f.format = CT_FORMAT_I420;
+        f.planes[0] = y;
+        f.planes[1] = u;
+        f.planes[2] = v;
+        f.strides[0] = W;
+        f.strides[1] = f.strides[2] = W / 2;
+        ck_assert_int_eq(ct_tracker_feed(t, &f, d, nd), CT_OK);
+        ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);
+        for (size_t i = 0; i < count; i++) {
+            ck_assert_float_ge(out[i].left, 0);
+            ck_assert_float_ge(out[i].top, 0);
+            ck_assert_float_le(out[i].left + out[i].width, W + 1e-3);
+            ck_assert_float_le(out[i].top + out[i].height, H + 1e-3);
+            seen++;
+        }
+    }
+    ck_assert_uint_gt(seen, 200);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("fit");
@@ -222,6 +263,7 @@ int main(void)
     tcase_add_test(tc, too_wide_is_narrowed);
     tcase_add_test(tc, a_moving_camera_is_left_alone);
     tcase_add_test(tc, a_box_to_the_side_moves_to_the_person);
+    tcase_add_test(tc, clipped_boxes_stay_in_the_image);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

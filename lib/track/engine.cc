@@ -587,6 +587,19 @@ size_t Engine::memory_bytes() const
            bank_.memory_bytes() + pixels_.memory_bytes() + count_.memory_bytes();
 }
 
+bool Engine::clip_box(ImageSize image, Box *b) const
+{
+    if (!cfg_.clip_boxes || !image.known())
+        return true;
+    const double x0 = std::max(0.0, b->left), y0 = std::max(0.0, b->top);
+    const double x1 = std::min<double>(image.width, b->left + b->width);
+    const double y1 = std::min<double>(image.height, b->top + b->height);
+    if (x1 <= x0 || y1 <= y0)
+        return false;
+    *b = Box{x0, y0, x1 - x0, y1 - y0};
+    return true;
+}
+
 bool Engine::reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const
 {
     Box b = t.box();
@@ -599,14 +612,8 @@ bool Engine::reported_box(const Track &t, int64_t t_us, ImageSize image, Box *ou
         b.width += f * (t.seen.width - b.width);
         b.height += f * (t.seen.height - b.height);
     }
-    if (cfg_.clip_boxes && image.known()) {
-        double x0 = std::max(0.0, b.left), y0 = std::max(0.0, b.top);
-        double x1 = std::min<double>(image.width, b.left + b.width);
-        double y1 = std::min<double>(image.height, b.top + b.height);
-        if (x1 <= x0 || y1 <= y0)
-            return false;
-        b = Box{x0, y0, x1 - x0, y1 - y0};
-    }
+    if (!clip_box(image, &b))
+        return false;
     *out = b;
     return true;
 }
@@ -649,7 +656,7 @@ void Engine::report(int64_t t_us, ImageSize image)
         state_.reported.push_back(o);
     }
     if (fit_boxes_)
-        fit_reported();
+        fit_reported(image);
     for (ct_track &o : state_.reported)
         pixels_.barycenter(Box{o.left, o.top, o.width, o.height}, &o.barycenter_x,
                            &o.barycenter_y);
@@ -657,7 +664,7 @@ void Engine::report(int64_t t_us, ImageSize image)
               [](const ct_track &a, const ct_track &b) { return a.id < b.id; });
 }
 
-void Engine::fit_reported()
+void Engine::fit_reported(ImageSize image)
 {
     // Where another track covers more than this of a box, its silhouette
     // is not its own.
@@ -683,7 +690,8 @@ void Engine::fit_reported()
                               std::max(b.top, o.top);
             covered = ix > 0 && iy > 0 && ix * iy > kMaxCovered * b.width * b.height;
         }
-        if (covered || !pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]))
+        if (covered || !pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]) ||
+            !clip_box(image, &fitted_[i]))
             fitted_[i] = b;
     }
     for (size_t i = 0; i < rows.size(); i++) {

@@ -189,7 +189,10 @@ private:
     void report(int64_t t_us, ImageSize image);
     // The reported boxes fitted to the silhouettes (refine_boxes), each
     // that another does not cover.
-    void fit_reported();
+    void fit_reported(ImageSize image);
+    // A box clipped to the image when clip_boxes asks; false when nothing
+    // of it is left.
+    bool clip_box(ImageSize image, Box *b) const;
     // A track's reported box: its estimate, drawn toward its detection
     // where the scene moves less predictably than the filter assumes, and
     // clipped to the image when asked; false when clipping leaves nothing.
