@@ -626,7 +626,8 @@ One run in a condition is one draw: on TUD-Campus's 71 frames, a little
 noise, a mirror or a small change of brightness moves ctrack's pixels-only
 MOTA by 10 points either way. So each sequence with frames is also run over
 families of variants (`eval/cteval/families.py`): sensor noise of three
-strengths with two seeds each; contrast from 0.4 to 1 with the black level
+strengths with two seeds each, and at the camera conditions' strength with
+three seeds (one noise pattern is one draw); contrast from 0.4 to 1 with the black level
 lowered or raised (haze, a washed-out picture), the frames as they are
 first; and half size as it is, mirrored, a little brighter or darker, with
 less contrast and with a little noise; and the frames cut by 4 pixels at

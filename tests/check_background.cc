@@ -370,6 +370,50 @@ START_TEST(stopped_person_under_a_track_is_not_absorbed)
 }
 END_TEST
 
+// Motion inside a blob (Background::live()): a square that stands still
+// is not alive, nor with sensor noise over the frame; one whose inside
+// changes (a person's arms, a turned head: half its rows shifted by two
+// pixels from a frame to the next) is.
+START_TEST(live_tells_a_stirring_blob_from_a_still_one)
+{
+    for (int kind = 0; kind < 3; kind++) {
+        Background bg;
+        bg.keep_luma(true);
+        Gray g;
+        uint32_t seed = 1;
+        bool live = false;
+        for (int k = 0; k < 60; k++) {
+            g.fill(100);
+            g.square(60, 40, 40, 200);
+            if (kind == 2 && k >= 30) // stripes that move inside the square
+                for (int r = 40; r < 80; r++)
+                    for (int c = 60; c < 100; c++)
+                        g.y[r * W + c] = (uint8_t)(((c + 2 * (k % 2)) / 4) % 2 ? 120 : 200);
+            if (kind == 1) // sensor noise: the sum of two uniform draws, sd 10 levels
+                for (uint8_t &v : g.y) {
+                    int n = 0;
+                    for (int d = 0; d < 2; d++) {
+                        seed = seed * 1103515245u + 12345u;
+                        n += (int)((seed >> 16) % 25) - 12;
+                    }
+                    v = (uint8_t)std::min(255, std::max(0, v + n));
+                }
+            bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
+            const int s = Background::kStartScale;
+            // The square appeared in the first frame: its blob is the
+            // square, whatever the model holds.
+            Vec<uint8_t> blob((size_t)bg.width() * bg.height(), 0);
+            for (int r = 40 / s; r < 80 / s; r++)
+                for (int c = 60 / s; c < 100 / s; c++)
+                    blob[(size_t)r * bg.width() + c] = 255;
+            if (k >= 31)
+                live |= bg.live(blob.data(), Rect{60 / s, 40 / s, 100 / s, 80 / s});
+        }
+        ck_assert_msg(live == (kind == 2), "kind %d: live %d", kind, live);
+    }
+}
+END_TEST
+
 // A slow lighting ramp (a level every 4 frames) is absorbed: no foreground.
 START_TEST(slow_lighting_ramp_is_absorbed)
 {
@@ -1150,6 +1194,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
+    tcase_add_test(tc, live_tells_a_stirring_blob_from_a_still_one);
     tcase_add_test(tc, start_lasts_the_same_time_at_any_frame_rate);
     tcase_add_test(tc, start_with_timestamps_far_apart);
     tcase_add_test(tc, fragments_merge_and_groups_split);

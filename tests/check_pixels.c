@@ -1052,6 +1052,136 @@ START_TEST(prime_refuses_bad_frames)
 }
 END_TEST
 
+/* The street's people, drawn as pedestrians (the contour template takes
+ * them for people, at the default candidate_min_score), 10 frames a
+ * second. */
+static ct_tracker *street_tracker(void)
+{
+    ct_config cfg = test_config();
+    cfg.source = CT_SOURCE_PIXELS;
+    return test_tracker(&cfg);
+}
+
+/* The confirmed track nearest (cx, top) within 12 pixels of its box's
+ * top centre, or NULL. */
+static const ct_track *track_at(const ct_track *out, size_t n, double cx, int top)
+{
+    const ct_track *best = NULL;
+    double d_best = 12;
+    for (size_t i = 0; i < n; i++) {
+        const double d = fabs(out[i].left + out[i].width / 2 - cx) + fabs(out[i].top - top);
+        if (out[i].state == CT_TRACK_CONFIRMED && d <= d_best) {
+            d_best = d;
+            best = &out[i];
+        }
+    }
+    return best;
+}
+
+/* A person walks in for 2 s and stops for 10 s: the same track follows
+ * them all along (a confirmed track's pixels are not learnt). */
+START_TEST(a_person_who_stops_for_10_s_stays_tracked)
+{
+    ct_tracker *t = street_tracker();
+    static image im;
+    ct_track out[64];
+    uint64_t id = 0;
+    for (int k = 0; k < 120; k++) {
+        const double cx = 40 + 4.0 * (k < 20 ? k : 20);
+        draw(&im, -1, 0);
+        draw_pedestrian(&im, cx, 80);
+        const size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        const ct_track *p = track_at(out, n, cx, 80);
+        if (k == 19) {
+            ck_assert_msg(p != NULL, "not tracked while walking");
+            id = p->id;
+        } else if (k > 19) {
+            ck_assert_msg(p != NULL && p->id == id, "lost %.1f s after stopping", (k - 19) / 10.0);
+        }
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Something put down on the pavement, person-shaped (a cut-out board):
+ * it appears and stays, and nothing moves in it. Within 3 s it is no
+ * candidate and no track. The same shape swaying by a pixel a frame, as a
+ * person standing does, is no object: one track follows it, without a
+ * break, until the background, which learns a track that never moved,
+ * takes it (some 6 s at 10 frames/s). */
+START_TEST(an_object_put_down_stops_being_a_candidate)
+{
+    const bool sways = _i == 1;
+    ct_tracker *t = street_tracker();
+    static image im;
+    ct_track out[64];
+    ct_candidate cand[32];
+    size_t nc = 0, n = 0;
+    int last_seen = -1;
+    uint64_t id = 0;
+    for (int k = 0; k < 100; k++) {
+        const double cx = 150 + (sways ? k % 2 : 0);
+        draw(&im, -1, 0);
+        if (k >= 20)
+            draw_pedestrian(&im, cx, 80);
+        n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+        const ct_track *p = track_at(out, n, cx, 80);
+        bool seen = p != NULL;
+        for (size_t i = 0; i < nc; i++)
+            seen |= cand[i].score >= 0.8f && fabs(cand[i].left + cand[i].width / 2 - cx) < 12;
+        if (seen)
+            last_seen = k;
+        if (sways && k == 25) {
+            ck_assert_msg(p != NULL, "the swaying person is not tracked");
+            id = p->id;
+        }
+        if (sways && k > 25 && k <= 60)
+            ck_assert_msg(p != NULL && p->id == id, "the swaying person's track broke %.1f s after they appeared",
+                          (k - 20) / 10.0);
+    }
+    if (!sways)
+        ck_assert_msg(last_seen < 50, "still a candidate or a track %.1f s after it appeared",
+                      (last_seen - 20) / 10.0);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
+/* Two people walking side by side, shoulders touching (one blob), come in
+ * from the left: once their tracks are confirmed there are two candidates
+ * and two tracks. */
+START_TEST(two_people_side_by_side_are_split)
+{
+    const int people = 2;
+    ct_tracker *t = street_tracker();
+    static image im;
+    ct_track out[64];
+    ct_candidate cand[32];
+    size_t nc = 0, n = 0;
+    const double gap = 0.26 * 70 + 1; /* a pedestrian's width and a pixel: one blob */
+    for (int k = 0; k < 40; k++) {
+        draw(&im, -1, 0);
+        for (int p = 0; p < people; p++)
+            draw_pedestrian(&im, 30 + 4.0 * k + p * gap, 80);
+        n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        ck_assert_int_eq(ct_tracker_get_candidates(t, cand, 32, sizeof cand[0], &nc), CT_OK);
+    }
+    int found = 0, tracked = 0;
+    for (int p = 0; p < people; p++) {
+        const double cx = 30 + 4.0 * 39 + p * gap;
+        bool c = false;
+        for (size_t i = 0; i < nc; i++)
+            c |= cand[i].score >= 0.8f && fabs(cand[i].left + cand[i].width / 2 - cx) < gap / 3;
+        found += c;
+        tracked += track_at(out, n, cx, 80) != NULL;
+    }
+    ck_assert_msg(found == people && tracked == people,
+                  "%d people side by side: %d candidates on them (of %zu), %d tracked", people,
+                  found, nc, tracked);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -1079,6 +1209,9 @@ static Suite *pixels_suite(void)
     tcase_add_test(tc, size_test_scores_by_size_and_aspect);
     tcase_add_loop_test(tc, a_primed_tracker_finds_who_is_there_from_the_first_frame, 0, 3);
     tcase_add_test(tc, prime_refuses_bad_frames);
+    tcase_add_test(tc, a_person_who_stops_for_10_s_stays_tracked);
+    tcase_add_loop_test(tc, an_object_put_down_stops_being_a_candidate, 0, 2);
+    tcase_add_test(tc, two_people_side_by_side_are_split);
     suite_add_tcase(s, tc);
     return s;
 }

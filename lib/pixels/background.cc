@@ -70,6 +70,13 @@ CT_TUNABLE(kContrastRef, "CTRACK_CONTRAST_REF", 41);
 CT_TUNABLE(kBlackBelow, "CTRACK_BLACK_BELOW", 16);
 constexpr int kVMinLowest = 10;
 
+// The share of a blob's pixels that change by more than V's floor from a
+// frame to the next in a blob that is alive (Background::live()). Noise
+// alone changes about 1.3% of them (the difference of two frames has
+// sqrt(2) times the noise, and the floor is 3.5 times it): the share asked
+// is some four times that (docs/tuning.md, "An object put down").
+CT_TUNABLE(kLiveFraction, "CTRACK_LIVE_FRACTION", 0.05);
+
 } // namespace
 
 double Background::age_s(int64_t t_us) const
@@ -175,6 +182,7 @@ size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
+           luma_.capacity() + old_luma_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
            line_dc_.capacity() + noise_samples_.memory_bytes() +
@@ -191,6 +199,7 @@ void Background::swap_models()
     mv_.swap(old_mv_);
     columns_.swap(old_columns_);
     rows_.swap(old_rows_);
+    luma_.swap(old_luma_);
 }
 
 void Background::rollback()
@@ -424,6 +433,8 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
     line_dc_.resize(w);
     columns_.assign(w, 0);
     rows_.assign(h, 0);
+    if (keep_luma_)
+        luma_.resize((size_t)w * h);
     for (int y = 0; y < h; y++) {
         const uint8_t *iu, *iv;
         dsp_.bg_gather_row(gather(img, y, &iu, &iv));
@@ -435,6 +446,8 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
             sum += iy[x];
         }
         rows_[y] = sum;
+        if (keep_luma_)
+            std::memcpy(luma_.data() + (size_t)y * w, iy, (size_t)w);
         const uint8_t *frozen_y = frozen_row(frozen, n_frozen, y);
         // The model before this frame: the old buffers, or on a (re)start
         // the image's own samples (and V at kBgVMax), or at a new scale the
@@ -483,6 +496,8 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     if (sample)
         noise_samples_.begin();
     update_rows(img, frozen, n_frozen, r, u, sample);
+    have_last_ = keep_luma_ && !u.restart && !u.rescale && old_luma_.size() == luma_.size();
+    live_level_ = r.vmin;
     // The camera, against the frame before at the same scale and size.
     constexpr int kReach = 8;
     camera_moved_ = !u.restart && !u.rescale && old_columns_.size() == columns_.size() &&
@@ -527,6 +542,30 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
                   std::abs(luma_at(img, g, s, w, h, x, y + 1) - luma_at(img, g, s, w, h, x, y - 1));
         *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
     });
+}
+
+void Background::keep_luma(bool on)
+{
+    keep_luma_ = on;
+    if (!on && !kept_) // a step that may still be rolled back keeps the last frame's
+        for (Vec<uint8_t> *v : {&luma_, &old_luma_})
+            Vec<uint8_t>(v->get_allocator()).swap(*v);
+}
+
+bool Background::live(const uint8_t *blob, const Rect &r) const
+{
+    if (!have_last_)
+        return false;
+    long area = 0, changed = 0;
+    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h_); y++)
+        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w_); x++) {
+            const size_t i = (size_t)y * w_ + x;
+            if (!blob[i])
+                continue;
+            area++;
+            changed += std::abs((int)luma_[i] - (int)old_luma_[i]) > live_level_;
+        }
+    return area > 0 && changed >= kLiveFraction * area;
 }
 
 void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)

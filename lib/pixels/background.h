@@ -78,6 +78,15 @@ public:
     // Re-learns the pixels of the blob within r at once: the model takes the
     // frame's values there.
     void absorb(const Planes &img, const uint8_t *blob, const Rect &r);
+    // Whether the blob `blob` within r moved inside since the frame before:
+    // at least kLiveFraction of its pixels changed by more than V's floor
+    // (the scene's noise). A person standing still sways and breathes; a
+    // board or a bag put down does not. False when the frame before was at
+    // another size or scale.
+    bool live(const uint8_t *blob, const Rect &r) const;
+    // Whether the frames' luma is kept for live() (from the next apply();
+    // off, its buffers are freed).
+    void keep_luma(bool on);
     int width() const { return w_; }
     int height() const { return h_; }
     size_t memory_bytes() const;
@@ -147,6 +156,12 @@ private:
         bool camera_moved;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
+    // This frame's luma and the last one's, at the working scale (swapped
+    // with the model), for live(); whether the last one is comparable, and
+    // this frame's V floor.
+    Vec<uint8_t> luma_, old_luma_;
+    bool keep_luma_ = false, have_last_ = false;
+    int live_level_ = 0;
     // The luma's column and row sums of this frame and the one before
     // (swapped with the model), and what they say of the camera.
     Vec<int32_t> columns_, rows_, old_columns_, old_rows_;

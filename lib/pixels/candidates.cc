@@ -78,7 +78,7 @@ size_t PixelCandidates::memory_bytes() const
     return background_.memory_bytes() + (kept_ ? kept_->memory_bytes() : 0) +
            blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
-           dets_.capacity() * sizeof(ct_detection) + whole_.capacity();
+           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() + live_.capacity();
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
@@ -125,6 +125,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     if (img.empty())
         return;
     Stopwatch sw;
+    background_.keep_luma(true); // for live()
     // The finer scales are for the contour template, which needs a
     // person's rows; size and aspect alone need none, and would only meet
     // more fragments (docs/notes/pixels.md, "The working scale").
@@ -141,12 +142,13 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
     out.clear();
     whole_.clear();
+    live_.clear();
     for (size_t i = 0; i < blob_rects_.size(); i++) {
         const Rect &r = blob_rects_[i];
         // A ghost is learnt at once and is no candidate.
         long frame_edges, model_edges;
         background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
-        if (model_edges > kGhostEdges * frame_edges) {
+        if (model_edges > kGhostEdges * frame_edges || put_down(tracks, r)) {
             background_.absorb(img, blobs_.cleaned(), r);
             continue;
         }
@@ -165,8 +167,29 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
         out.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));
+        live_.push_back(background_.live(blobs_.cleaned(), r));
     }
     counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+bool PixelCandidates::put_down(const Vec<Track> &tracks, const Rect &r) const
+{
+    const int s = background_.scale();
+    for (const Track &t : tracks) {
+        if (!t.object)
+            continue;
+        // The blob holds the track's centre, and the track's box most of
+        // the blob.
+        const Rect b = to_working(t.box(), s);
+        const int cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+        if (cx < r.x0 || cx >= r.x1 || cy < r.y0 || cy >= r.y1)
+            continue;
+        const long inter = (long)std::max(0, std::min(b.x1, r.x1) - std::max(b.x0, r.x0)) *
+                           std::max(0, std::min(b.y1, r.y1) - std::max(b.y0, r.y0));
+        if (2 * inter >= (long)(r.x1 - r.x0) * (r.y1 - r.y0))
+            return true;
+    }
+    return false;
 }
 
 void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
@@ -174,6 +197,7 @@ void PixelCandidates::verify(int64_t t_us, const Planes &img, const Vec<Track> &
                              Counters &counters, Vec<ct_candidate> &out)
 {
     Stopwatch sw;
+    background_.keep_luma(false);
     update_background(t_us, img, tracks, size, Background::kMinScale);
     counters.stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     classifier_.new_mask();
@@ -201,6 +225,7 @@ void PixelCandidates::mask_only(int64_t t_us, const Planes &img, const Vec<Track
                                 const PersonSize &size, Counters &counters)
 {
     Stopwatch sw;
+    background_.keep_luma(false);
     update_background(t_us, img, tracks, size, Background::kMinScale);
     counters.stage_ns[CT_STAGE_BACKGROUND] += sw.lap();
     blobs_.clean(background_.mask(), background_.width(), background_.height());

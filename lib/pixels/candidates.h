@@ -53,6 +53,9 @@ public:
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.
     bool whole(size_t i) const { return whole_[i] != 0; }
+    // Whether this step's candidate i (of find()) moved inside since the
+    // frame before (Background::live()).
+    bool live(size_t i) const { return i < live_.size() && live_[i] != 0; }
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale
@@ -84,6 +87,9 @@ private:
     // The working scale from the people's size, no finer than `finest`.
     void update_background(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
                            const PersonSize &size, int finest);
+    // Whether blob r (working pixels) is an object put down: a track the
+    // engine took for one (Track::object) stands on it.
+    bool put_down(const Vec<Track> &tracks, const Rect &r) const;
 
     Background background_;
     Owned<Background> kept_; // keep_background()'s copy
@@ -92,7 +98,7 @@ private:
     bool have_mask_ = false; // this step
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
-    Vec<char> whole_;
+    Vec<char> whole_, live_;
 };
 
 } // namespace ctrack

@@ -22,6 +22,13 @@ constexpr double kMinSide = 1.0;
 // track knows their velocity. At 25 frames/s the reach is inside the IoU
 // gate (docs/tuning.md, "A new track's reach").
 CT_TUNABLE(kNewTrackReach, "CTRACK_NEW_TRACK_REACH", 2.0);
+// From the pixels alone, a confirmed track that never moved half its
+// height, stands within kObjectReach of its height from where it started,
+// and whose blob stayed still inside for kObjectAfterS is an object put
+// down, not a person (docs/tuning.md, "An object put down"): a person who
+// came in slowly toward the camera and stands is not.
+CT_TUNABLE(kObjectAfterS, "CTRACK_OBJECT_AFTER", 1.0);
+CT_TUNABLE(kObjectReach, "CTRACK_OBJECT_REACH", 0.15);
 
 } // namespace
 
@@ -316,6 +323,23 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
         size.learn();
 }
 
+void Engine::note_live(int64_t t_us)
+{
+    for (Track &t : state_.tracks) {
+        // Stillness counts only over steps where the track had a blob of
+        // its own: one carried by mean shift, or lost, may be a person
+        // hidden behind another.
+        if (t.last_update_us != t_us || t.det_index < 0 || pixels_.live((size_t)t.det_index))
+            t.live_us = t_us;
+        const Box b = t.box();
+        const bool stayed = !t.moved && std::hypot(b.left + b.width / 2 - t.start_x,
+                                                   b.top + b.height / 2 - t.start_y) <=
+                                            kObjectReach * b.height;
+        t.object = t.state == CT_TRACK_CONFIRMED && stayed &&
+                   elapsed_s(t_us, t.live_us) >= kObjectAfterS;
+    }
+}
+
 void Engine::recover(const ct_detection *dets)
 {
     for (int i : pool_tracks_)
@@ -523,6 +547,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
 
     state_.learnt.motion.learn(time.dt);
     learn_sizes(dets, t_us, image);
+    if (cfg_.source == CT_SOURCE_PIXELS && !img.empty())
+        note_live(t_us);
     age_unmatched(t_us, image);
     start_tracks(dets, t_us, time.first);
     ns[CT_STAGE_LIFECYCLE] += sw.lap();

@@ -179,6 +179,11 @@ private:
     // The people's size learnt from this step's confident single-person
     // boxes: the detections (or candidates) that updated confirmed tracks.
     void learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image);
+    // From the pixels alone: the tracks whose candidate moved inside this
+    // step, or that had none, are alive at t_us (Track::live_us), and those
+    // that never moved and have not been alive for kObjectAfterS are
+    // objects put down.
+    void note_live(int64_t t_us);
     // Matches the tracks left in pool_tracks_ to the detections left in
     // pool_dets_ by their last detection's box instead of the prediction.
     void recover(const ct_detection *dets);

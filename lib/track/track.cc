@@ -65,6 +65,7 @@ void Track::start(const ct_detection &d, double detection_noise, int index, int6
     start_y = d.top + d.height / 2.0;
     start_bottom = (double)d.top + d.height;
     start_us = t_us;
+    live_us = t_us;
     det_index = index;
     class_id = d.class_id;
     score = d.score;

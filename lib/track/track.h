@@ -50,6 +50,13 @@ struct Track {
     // its starting side of a line from.
     double start_bottom = 0;
     int64_t start_us = 0;
+    // From the pixels alone: when its candidate last moved inside
+    // (PixelCandidates::live()), and whether it is taken for an object put
+    // down (a sign, a bag): it never moved and nothing moved in it for a
+    // while. An object's blob is learnt by the background and is no
+    // candidate.
+    int64_t live_us = 0;
+    bool object = false;
     int det_index = -1;
     int class_id = 0;
     float score = 0;
