@@ -513,6 +513,19 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
 
 namespace {
 
+// Calls f(x, y, i) for each pixel of the blob `blob` (a w x h mask,
+// non-zero inside) within r clipped to the mask, i its index.
+template <typename F>
+void for_each_blob_pixel(const uint8_t *blob, int w, int h, const Rect &r, F &&f)
+{
+    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h); y++)
+        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w); x++) {
+            const size_t i = (size_t)y * w + x;
+            if (blob[i])
+                f(x, y, i);
+        }
+}
+
 // Luma at working pixel (x, y) of a model at scale s, clamped to the
 // image, through the exposure table lut.
 inline int luma_at(const Planes &img, const uint8_t *lut, int s, int w, int h, int x, int y)
@@ -557,33 +570,25 @@ bool Background::live(const uint8_t *blob, const Rect &r) const
     if (!have_last_)
         return false;
     long area = 0, changed = 0;
-    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h_); y++)
-        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w_); x++) {
-            const size_t i = (size_t)y * w_ + x;
-            if (!blob[i])
-                continue;
-            area++;
-            changed += std::abs((int)luma_[i] - (int)old_luma_[i]) > live_level_;
-        }
+    for_each_blob_pixel(blob, w_, h_, r, [&](int, int, size_t i) {
+        area++;
+        changed += std::abs((int)luma_[i] - (int)old_luma_[i]) > live_level_;
+    });
     return area > 0 && changed >= kLiveFraction * area;
 }
 
 void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)
 {
     const int s = scale_;
-    for (int y = std::max(r.y0, 0); y < std::min(r.y1, h_); y++)
-        for (int x = std::max(r.x0, 0); x < std::min(r.x1, w_); x++) {
-            const size_t i = (size_t)y * w_ + x;
-            if (!blob[i])
-                continue;
-            my_[i] = (uint8_t)luma_at(img, gain_lut_, s, w_, h_, x, y);
-            if (color_) {
-                const size_t cy = (size_t)((y * s) >> 1), cx = (size_t)((x * s) >> 1);
-                mu_[i] = img.u[cy * img.u_stride + cx * img.c_step];
-                mv_[i] = img.v[cy * img.v_stride + cx * img.c_step];
-            }
-            mask_[i] = 0;
+    for_each_blob_pixel(blob, w_, h_, r, [&](int x, int y, size_t i) {
+        my_[i] = (uint8_t)luma_at(img, gain_lut_, s, w_, h_, x, y);
+        if (color_) {
+            const size_t cy = (size_t)((y * s) >> 1), cx = (size_t)((x * s) >> 1);
+            mu_[i] = img.u[cy * img.u_stride + cx * img.c_step];
+            mv_[i] = img.v[cy * img.v_stride + cx * img.c_step];
         }
+        mask_[i] = 0;
+    });
 }
 
 } // namespace ctrack

@@ -78,7 +78,8 @@ size_t PixelCandidates::memory_bytes() const
     return background_.memory_bytes() + (kept_ ? kept_->memory_bytes() : 0) +
            blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
-           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() + live_.capacity();
+           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() +
+           rects_.capacity() * sizeof(Rect);
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
@@ -142,7 +143,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
     out.clear();
     whole_.clear();
-    live_.clear();
+    rects_.clear();
     for (size_t i = 0; i < blob_rects_.size(); i++) {
         const Rect &r = blob_rects_[i];
         // A ghost is learnt at once and is no candidate.
@@ -167,9 +168,14 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
         out.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));
-        live_.push_back(background_.live(blobs_.cleaned(), r));
+        rects_.push_back(r);
     }
     counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+bool PixelCandidates::live(size_t i) const
+{
+    return i < rects_.size() && background_.live(blobs_.cleaned(), rects_[i]);
 }
 
 bool PixelCandidates::put_down(const Vec<Track> &tracks, const Rect &r) const

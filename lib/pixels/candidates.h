@@ -54,8 +54,8 @@ public:
     // of a split one tells nothing of a person's width.
     bool whole(size_t i) const { return whole_[i] != 0; }
     // Whether this step's candidate i (of find()) moved inside since the
-    // frame before (Background::live()).
-    bool live(size_t i) const { return i < live_.size() && live_[i] != 0; }
+    // frame before (Background::live(); computed when asked).
+    bool live(size_t i) const;
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale
@@ -98,7 +98,8 @@ private:
     bool have_mask_ = false; // this step
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
-    Vec<char> whole_, live_;
+    Vec<char> whole_;
+    Vec<Rect> rects_; // this step's candidates' blobs, working pixels
 };
 
 } // namespace ctrack

@@ -326,16 +326,18 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
 void Engine::note_live(int64_t t_us)
 {
     for (Track &t : state_.tracks) {
+        // A track that moved is never an object: its blob is not read.
         // Stillness counts only over steps where the track had a blob of
         // its own: one carried by mean shift, or lost, may be a person
         // hidden behind another.
+        if (t.moved) {
+            t.object = false;
+            continue;
+        }
         if (t.last_update_us != t_us || t.det_index < 0 || pixels_.live((size_t)t.det_index))
             t.live_us = t_us;
         const Box b = t.box();
-        const bool stayed = !t.moved && std::hypot(b.left + b.width / 2 - t.start_x,
-                                                   b.top + b.height / 2 - t.start_y) <=
-                                            kObjectReach * b.height;
-        t.object = t.state == CT_TRACK_CONFIRMED && stayed &&
+        t.object = t.state == CT_TRACK_CONFIRMED && t.from_start(b) <= kObjectReach * b.height &&
                    elapsed_s(t_us, t.live_us) >= kObjectAfterS;
     }
 }

@@ -72,6 +72,11 @@ void Track::start(const ct_detection &d, double detection_noise, int index, int6
     best_score = d.score;
 }
 
+double Track::from_start(const Box &b) const
+{
+    return std::hypot(b.left + b.width / 2 - start_x, b.top + b.height / 2 - start_y);
+}
+
 void Track::predict(double dt, double motion_noise)
 {
     double hgt = std::max(h.x, kMinSide);
@@ -110,8 +115,7 @@ void Track::correct(const ct_detection &d, double detection_noise, int index, in
     last_update_us = t_us;
     seen_h = d.height;
     seen = det_box(d);
-    if (std::hypot(d.left + d.width / 2.0 - start_x, d.top + d.height / 2.0 - start_y) >
-        0.5 * d.height)
+    if (from_start(seen) > 0.5 * d.height)
         moved = true;
     det_index = index;
     class_id = d.class_id;

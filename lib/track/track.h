@@ -51,7 +51,8 @@ struct Track {
     double start_bottom = 0;
     int64_t start_us = 0;
     // From the pixels alone: when its candidate last moved inside
-    // (PixelCandidates::live()), and whether it is taken for an object put
+    // (PixelCandidates::live(); read only while it has not moved), and
+    // whether it is taken for an object put
     // down (a sign, a bag): it never moved and nothing moved in it for a
     // while. An object's blob is learnt by the background and is no
     // candidate.
@@ -74,6 +75,8 @@ struct Track {
     int64_t tmpl_us = 0;
 
     Box box() const;
+    // How far box b's centre lies from where the track started.
+    double from_start(const Box &b) const;
     // The motion model started at detection d (position noise
     // detection_noise box heights) and the bookkeeping of a first hit.
     void start(const ct_detection &d, double detection_noise, int index, int64_t t_us);
