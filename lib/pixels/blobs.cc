@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 
 namespace ctrack {
@@ -43,6 +42,15 @@ constexpr double kMinCentreGap = 0.2;
 // blob heights below both (a head is about 0.13 of a person's height;
 // docs/tuning.md has the choice).
 constexpr double kHeadDip = 0.06;
+// The top edge is smoothed by a running median this many blob heights wide
+// (a head's width) before heads are sought on it: a speck of noise or a
+// raised hand is no head (docs/tuning.md has the choice).
+CT_TUNABLE(kHeadWidth, "CTRACK_HEAD_WIDTH", 0.12);
+// A blob cut between more heads than its width says: each part must vote
+// above this, as sure as a candidate must be to start a track (the default
+// candidate_min_score), and above the whole blob.
+constexpr double kHeadsVote = 0.8;
+constexpr int kMaxHalfWindow = 16;
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -112,7 +120,7 @@ struct BlobFinder::Impl {
     Closing closing;
     OuterRegions regions;
     Vec<Rect> blobs;
-    Vec<int> columns, centres, tops;
+    Vec<int> columns, centres, tops, smooth, order, heads;
     Vec<float> votes;
     const uint8_t *at(int x, int y) const { return &clean[(size_t)y * w + x]; }
     // Foreground pixels of column x in rows [y0, y1).
@@ -148,7 +156,9 @@ size_t BlobFinder::memory_bytes() const
     const Impl &m = *impl_;
     return m.clean.capacity() + m.closing.memory_bytes() + m.regions.memory_bytes() +
            m.blobs.capacity() * sizeof(Rect) + m.votes.capacity() * sizeof(float) +
-           (m.columns.capacity() + m.centres.capacity() + m.tops.capacity()) * sizeof(int);
+           (m.columns.capacity() + m.centres.capacity() + m.tops.capacity() +
+            m.smooth.capacity() + m.order.capacity() + m.heads.capacity()) *
+               sizeof(int);
 }
 
 float BlobFinder::vote(Classifier &cls, const Rect &r) const
@@ -201,25 +211,116 @@ Rect BlobFinder::rows_of(const Rect &r, int x0, int x1) const
     return p;
 }
 
-int BlobFinder::between_heads(const Rect &r, Classifier &cls)
+Vec<int> &BlobFinder::top_edge(const Rect &r)
 {
     Impl &m = *impl_;
-    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
-    // The top edge: each column's first foreground row (r.y1 if none).
     Vec<int> &top = m.tops;
-    top.assign(bw, r.y1);
+    top.assign(r.x1 - r.x0, r.y1);
     for (int x = r.x0; x < r.x1; x++)
         for (int y = r.y0; y < r.y1; y++)
             if (*m.at(x, y)) {
                 top[x - r.x0] = y;
                 break;
             }
+    return top;
+}
+
+int BlobFinder::dip_middle(const Vec<int> &top, int a, int b)
+{
+    int d = a;
+    for (int i = a + 1; i < b; i++)
+        if (top[i] > top[d])
+            d = i;
+    int last = d;
+    while (last + 1 < b && top[last + 1] == top[d])
+        last++;
+    return (d + last + 1) / 2;
+}
+
+void BlobFinder::heads(const Rect &r, Vec<int> &out)
+{
+    Impl &m = *impl_;
+    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
+    const Vec<int> &raw = top_edge(r);
+    // The edge smoothed by a running median a head wide.
+    Vec<int> &top = m.smooth;
+    top.resize(bw);
+    const int half = std::min(kMaxHalfWindow, (int)(kHeadWidth * bh / 2));
+    int window[2 * kMaxHalfWindow + 1];
+    for (int i = 0; i < bw; i++) {
+        int n = 0;
+        for (int j = std::max(0, i - half); j <= std::min(bw - 1, i + half); j++)
+            window[n++] = raw[j];
+        std::nth_element(window, window + n / 2, window + n);
+        top[i] = window[n / 2];
+    }
+    // Highest first: a column is a head when it is at least kMinCentreGap
+    // heights from each head found (all higher) and the edge between them
+    // dips kHeadDip heights below it.
+    const int gap = (int)std::ceil(kMinCentreGap * bh);
+    Vec<int> &order = m.order;
+    order.resize(bw);
+    for (int i = 0; i < bw; i++)
+        order[i] = i;
+    // (std::sort, not stable_sort, which takes a buffer from the heap.)
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return top[a] < top[b] || (top[a] == top[b] && a < b); });
+    out.clear();
+    for (int i : order) {
+        if (top[i] >= r.y1)
+            break;
+        bool head = true;
+        for (size_t k = 0; k < out.size() && head; k++) {
+            const int a = std::min(out[k], i), b = std::max(out[k], i);
+            head = b - a >= gap &&
+                   *std::max_element(&top[a], &top[b]) - top[i] >= kHeadDip * bh;
+        }
+        if (head)
+            out.push_back(i);
+    }
+    std::sort(out.begin(), out.end());
+}
+
+bool BlobFinder::cut_between_heads(const Rect &r, const Vec<int> &hs, Classifier &cls,
+                                   Vec<int> &cuts)
+{
+    Impl &m = *impl_;
+    const float whole = std::max(vote(cls, r), (float)kHeadsVote);
+    const size_t first = cuts.size();
+    int from = r.x0;
+    for (size_t k = 0; k < hs.size(); k++) {
+        const int to = k + 1 < hs.size() ? r.x0 + dip_middle(m.tops, hs[k], hs[k + 1]) : r.x1;
+        if (!(cls.vote_part(m.clean.data(), m.w, rows_of(r, from, to)).score > whole)) {
+            cuts.resize(first);
+            return false;
+        }
+        if (to < r.x1)
+            cuts.push_back(to);
+        from = to;
+    }
+    return true;
+}
+
+bool BlobFinder::one_head_each(const Rect &r, const Vec<int> &hs, const Vec<int> &cuts)
+{
+    if (hs.empty() || hs.size() + 1 != cuts.size())
+        return false;
+    for (size_t k = 0; k < hs.size(); k++)
+        if (r.x0 + hs[k] < cuts[k] || r.x0 + hs[k] >= cuts[k + 1])
+            return false;
+    return true;
+}
+
+int BlobFinder::between_heads(const Rect &r, Classifier &cls)
+{
+    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
+    const Vec<int> &top = top_edge(r);
     // The highest column is one head; the other is the highest column at
     // least kMinCentreGap heights away with a dip of kHeadDip heights below
     // both between them.
     const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
     const int gap = (int)std::ceil(kMinCentreGap * bh);
-    int h2 = -1, dip = -1;
+    int h2 = -1;
     for (int dir : {-1, 1}) {
         // Walking away from h1, d is the deepest column passed (the first
         // of equals, seen from the left).
@@ -229,23 +330,15 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
                 d = i;
             if (std::abs(i - h1) < gap || (h2 >= 0 && top[i] >= top[h2]))
                 continue;
-            if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh) {
+            if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh)
                 h2 = i;
-                dip = d;
-            }
         }
     }
     if (h2 < 0)
         return -1;
-    // The middle of the dip's bottom (the top edge is often flat there:
-    // shoulders).
-    const int hi = std::max(h1, h2);
-    int last = dip;
-    while (last + 1 <= hi && top[last + 1] == top[dip])
-        last++;
     // The template decides: both parts must be pedestrians by its vote,
     // and look more like one than the whole does.
-    const int cut = r.x0 + (dip + last + 1) / 2;
+    const int cut = r.x0 + dip_middle(top, std::min(h1, h2), std::max(h1, h2));
     const float whole = std::max(vote(cls, r), 0.5f);
     if (vote(cls, rows_of(r, r.x0, cut)) > whole && vote(cls, rows_of(r, cut, r.x1)) > whole)
         return cut;
@@ -413,7 +506,7 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
         head_cut = between_heads(r, cls);
         if (head_cut < 0) {
             out.push_back(r);
-            whole_.push_back(1);
+            whole_.push_back(kWhole);
             return;
         }
     }
@@ -423,12 +516,22 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
     // blob, and each track keeps its own part). Else, in a blob wider than
     // one person, at the emptiest column near each equal cut; in a narrower
     // one, between two heads on its top edge when the contour template
-    // agrees (people who came in together, whom no track told apart).
+    // agrees (people who came in together, whom no track told apart). More
+    // heads on the top edge than the width or the tracks say (three
+    // abreast, closer than the size model's width) cut it between the
+    // heads where the template takes each part for a pedestrian.
     Vec<int> &cuts = m.columns;
     cuts.clear();
     cuts.push_back(r.x0);
+    Vec<int> &hs = m.heads;
+    hs.clear();
+    if (head_cut < 0)
+        heads(r, hs);
     if (head_cut >= 0) {
         cuts.push_back(head_cut);
+    } else if (hs.size() >= 2 && (int)hs.size() > parts && hs.size() > centres.size() &&
+               cut_between_heads(r, hs, cls, cuts)) {
+        // cut between the heads
     } else if (centres.size() >= 2) {
         for (size_t k = 0; k + 1 < centres.size(); k++) {
             const int mid = (centres[k] + centres[k + 1]) / 2;
@@ -443,12 +546,13 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
         }
     }
     cuts.push_back(r.x1);
+    const char kind = cuts.size() == 2 ? kWhole : one_head_each(r, hs, cuts) ? kHeadedPart : kPart;
     for (size_t k = 0; k + 1 < cuts.size(); k++) {
         // Each part's own vertical extent.
         const Rect part = rows_of(r, cuts[k], cuts[k + 1]);
         if (part.y1 > part.y0 && part.x1 > part.x0) {
             out.push_back(part);
-            whole_.push_back(cuts.size() == 2);
+            whole_.push_back(kind);
         }
     }
 }

@@ -38,7 +38,11 @@ public:
     int dropped() const { return dropped_; }
     // Whether the last find()'s blob i is a whole blob, not a part of one
     // that was split (a group, or a blob two tracks shared).
-    bool whole(size_t i) const { return whole_[i] != 0; }
+    bool whole(size_t i) const { return whole_[i] == kWhole; }
+    // Whether it is a part of a split blob holding one head of the blob's
+    // top edge: its neighbours' arms and legs fill its outline's hollows, so
+    // its fill says nothing of its shape.
+    bool headed_part(size_t i) const { return whole_[i] == kHeadedPart; }
     bool flooded() const { return flooded_; }
     // Only the cleaning: the closing of the w x h mask.
     void clean(const uint8_t *mask, int w, int h);
@@ -70,6 +74,23 @@ private:
     // top edge, when the contour template takes both parts for pedestrians
     // and scores them above the whole: the column, or -1.
     int between_heads(const Rect &r, Classifier &cls);
+    // r's top edge: each column's first foreground row (r.y1 if none), in
+    // Impl::tops.
+    Vec<int> &top_edge(const Rect &r);
+    // The middle of the deepest run of the top edge between columns a and b
+    // (the edge is often flat there: shoulders).
+    static int dip_middle(const Vec<int> &top, int a, int b);
+    // The columns of r (from r.x0) of the heads on its top edge, left to
+    // right (top_edge() is left in Impl::tops).
+    void heads(const Rect &r, Vec<int> &out);
+    // Cuts (absolute columns) between heads `hs` appended to `cuts` when the
+    // contour template takes every part for a pedestrian, its fill aside,
+    // surely (kHeadsVote) and above the whole; false, `cuts` as it was,
+    // otherwise.
+    bool cut_between_heads(const Rect &r, const Vec<int> &hs, Classifier &cls, Vec<int> &cuts);
+    // Whether each part between the cuts [r.x0, ..., r.x1] holds one head.
+    static bool one_head_each(const Rect &r, const Vec<int> &hs, const Vec<int> &cuts);
+    enum : char { kPart, kWhole, kHeadedPart };
     struct Impl;
     Owned<Impl> impl_;
     Vec<char> whole_;

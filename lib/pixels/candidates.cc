@@ -155,7 +155,8 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
         }
         ct_candidate c = classifier_.candidate(
             blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
-            (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s));
+            (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s),
+            blobs_.headed_part(i));
         if (test == CT_PEDESTRIAN_SIZE)
             c.score = person_sized(c, size) ? 1.0f : 0.0f;
         // A sliver at the image's left or right edge, fewer than

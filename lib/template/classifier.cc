@@ -303,8 +303,16 @@ Vote Classifier::vote(const uint8_t *mask, int w, const Rect &r)
     return v;
 }
 
+Vote Classifier::vote_part(const uint8_t *mask, int w, const Rect &r)
+{
+    ClassifierParams p = default_params();
+    p.veto.max_fill = 1;
+    shape_of(mask, w, r.x0, r.y0, r.x1, r.y1, &shape_);
+    return classify(shape_, p);
+}
+
 ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, float left,
-                                   float top, float width, float height)
+                                   float top, float width, float height, bool part)
 {
     r.x0 = std::max(r.x0, 0);
     r.y0 = std::max(r.y0, 0);
@@ -320,7 +328,7 @@ ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, fl
             d = -1;
         return c; // outside the image: no voters
     }
-    const Vote v = vote(mask, w, r);
+    const Vote v = part ? vote_part(mask, w, r) : vote(mask, w, r);
     c.score = v.score;
     c.votes_yes = v.yes;
     c.voters = v.voters;

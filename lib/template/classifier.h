@@ -102,10 +102,15 @@ public:
     void new_mask() { memo_.clear(); }
     // The vote on the foreground of the w x h mask inside r (within it).
     Vote vote(const uint8_t *mask, int w, const Rect &r);
+    // The vote on a part of a group cut between two people's heads, whose
+    // fill the vetoes do not read (the neighbours' arms and legs fill its
+    // outline's hollows); not remembered.
+    Vote vote_part(const uint8_t *mask, int w, const Rect &r);
     // The vote inside r (clipped to the mask) as the candidate the API
-    // reports, with the box (left, top, width, height) in frame pixels.
+    // reports, with the box (left, top, width, height) in frame pixels; a
+    // `part` as vote_part() has it.
     ct_candidate candidate(const uint8_t *mask, int w, int h, Rect r, float left, float top,
-                           float width, float height);
+                           float width, float height, bool part = false);
     size_t memory_bytes() const
     {
         return shape_.runs.memory_bytes() + shape_.columns.capacity() * sizeof(int) +
