@@ -11,6 +11,7 @@
 #include <set>
 #include <utility>
 
+#include "pixels/box_fit.h"
 #include "track/gate.h"
 #include "track/motion.h"
 #include "track/person_size.h"
@@ -403,11 +404,49 @@ START_TEST(scene_motion_follows_the_innovations_in_time)
 }
 END_TEST
 
+// ---------------------------------------------------------------------------
+// What the fit does to a detector's boxes (box_fit.h).
+
+// A detector whose boxes are 1.4 times a person's width and start 5% of
+// their height too high: once 20 boxes were fitted, a box is narrowed and
+// moved down as the fit moved them, about its own centre across; before,
+// it is left as it is. Bad boxes teach nothing.
+START_TEST(fit_bias_learns_what_the_fit_does)
+{
+    FitBias f;
+    const Box det{100, 50, 56, 100};
+    const Box fitted{108, 55, 40, 100}; // 40/56 wide, 5% lower
+    for (int k = 0; k < 19; k++)
+        f.learn(det, fitted);
+    ck_assert(!f.known());
+    const Box b{300, 200, 70, 140};
+    Box same = f.apply(b);
+    ck_assert_double_eq(same.left, b.left);
+    ck_assert_double_eq(same.width, b.width);
+    ck_assert_double_eq(same.top, b.top);
+    f.learn(Box{0, 0, 0, 100}, fitted); // no width: ignored
+    f.learn(Box{0, 0, NAN, 100}, fitted);
+    ck_assert(!f.known());
+    f.learn(det, fitted);
+    ck_assert(f.known());
+    const Box a = f.apply(b);
+    ck_assert_double_eq_tol(a.width, 70 * 40.0 / 56, 1e-9);
+    ck_assert_double_eq_tol(a.left + a.width / 2, b.left + b.width / 2, 1e-9);
+    ck_assert_double_eq_tol(a.top, b.top + 0.05 * 140, 1e-9);
+    ck_assert_double_eq(a.height, b.height);
+    // A detector that changes: the mean follows it within some 50 boxes.
+    for (int k = 0; k < 300; k++)
+        f.learn(det, det);
+    ck_assert_double_eq_tol(f.apply(b).width, 70, 0.1);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("track");
     TCase *tc = tcase_create("models");
     tcase_add_test(tc, filter_learns_a_constant_velocity);
+    tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, filter_prediction_grows_with_time);
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);

@@ -202,6 +202,11 @@ void Background::swap_models()
     luma_.swap(old_luma_);
 }
 
+double Background::since_camera_moved_s(int64_t t_us) const
+{
+    return moved_us_ == kNever ? 1e9 : elapsed_s(t_us, moved_us_);
+}
+
 void Background::rollback()
 {
     if (!kept_)
@@ -225,6 +230,7 @@ void Background::rollback()
     noise_ = old_dims_.noise;
     set_gain(old_dims_.gain);
     camera_moved_ = old_dims_.camera_moved;
+    moved_us_ = old_dims_.moved_us;
     kept_ = false;
 }
 
@@ -327,8 +333,8 @@ Background::Update Background::prepare(const Planes &img, int scale, const Rect 
 {
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
-    old_dims_ = Dims{w_,        h_,       fw_,    fh_,   scale_,         color_, frames_,
-                     start_us_, last_us_, noise_, gain_, camera_moved_};
+    old_dims_ = Dims{w_,        h_,       fw_,    fh_,   scale_,         color_,   frames_,
+                     start_us_, last_us_, noise_, gain_, camera_moved_, moved_us_};
     swap_models();
     kept_ = true;
     scale = std::min(std::max(scale, finest_), kMaxScale);
@@ -504,6 +510,8 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
                     old_rows_.size() == rows_.size() &&
                     (profile_shifted(columns_.data(), old_columns_.data(), w_, kReach) ||
                      profile_shifted(rows_.data(), old_rows_.data(), h_, kReach));
+    if (camera_moved_)
+        moved_us_ = t_us;
     if (sample)
         noise_.end(noise_samples_, u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;

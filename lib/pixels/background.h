@@ -59,6 +59,9 @@ public:
     // Whether the camera moved between the last two frames learnt
     // (camera_motion.h): their luma's projections match better shifted.
     bool camera_moved() const { return camera_moved_; }
+    // Seconds from the last frame in which the camera moved to t_us (a
+    // large number if it never did since the model started).
+    double since_camera_moved_s(int64_t t_us) const;
     // The model as it was before the last apply() (and absorb()) is kept
     // until commit(): rollback() returns to it, so that a step that fails
     // after the update leaves the model untouched. Both are O(1) and never
@@ -154,6 +157,7 @@ private:
         NoiseLevel noise;
         double gain;
         bool camera_moved;
+        int64_t moved_us;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     // This frame's luma and the last one's, at the working scale (swapped
@@ -166,6 +170,8 @@ private:
     // (swapped with the model), and what they say of the camera.
     Vec<int32_t> columns_, rows_, old_columns_, old_rows_;
     bool camera_moved_ = false;
+    int64_t moved_us_ = kNever; // the last frame in which it moved
+    static constexpr int64_t kNever = INT64_MIN;
     // The old model resampled to a new scale, for the one update that
     // changes it (released after).
     Vec<uint8_t> rs_my_, rs_vy_, rs_mu_, rs_mv_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/tunable.h"
 #include "pixels/mask.h"
 
 namespace ctrack {
@@ -40,6 +41,10 @@ constexpr double kCut = 0.75, kFeetReach = 1.2;
 // to it: a detector's boxes are often looser than a person.
 constexpr double kColumnFill = 0.1, kWidthMargin = 1.2;
 constexpr int kMaxColumns = 1024;
+// FitBias: boxes learnt before the mean is used, and the number of boxes
+// the mean is over once it runs.
+CT_TUNABLE(kBiasMinSamples, "CTRACK_BIAS_MIN", 20);
+CT_TUNABLE(kBiasSamples, "CTRACK_BIAS_SAMPLES", 50);
 
 // The first column at which the running sum of counts[0..n-1] reaches
 // `share` of `total` (n > 0, a positive total).
@@ -196,6 +201,34 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     out->top = sized.height != b.height ? sized.top
                                         : b.top + follow * (cy - (b.top + b.height / 2));
     return true;
+}
+
+void FitBias::learn(const Box &detector, const Box &fitted)
+{
+    if (!(detector.width > 0 && detector.height > 0))
+        return;
+    const double width = fitted.width / detector.width;
+    const double down = (fitted.top + fitted.height / 2 - detector.top - detector.height / 2) /
+                        detector.height;
+    if (!std::isfinite(width) || !std::isfinite(down))
+        return;
+    n_++;
+    const double rate = 1 / std::min(n_, kBiasSamples);
+    width_ += rate * (width - width_);
+    down_ += rate * (down - down_);
+}
+
+bool FitBias::known() const { return n_ >= kBiasMinSamples; }
+
+Box FitBias::apply(const Box &b) const
+{
+    if (!known())
+        return b;
+    Box out = b;
+    out.width = b.width * width_;
+    out.left = b.left + (b.width - out.width) / 2;
+    out.top = b.top + down_ * b.height;
+    return out;
 }
 
 } // namespace ctrack

@@ -27,6 +27,28 @@ constexpr double kFitFollow = 0.7;
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool narrow, Box *out);
 
+// What the fit does to a detector's boxes, learnt online from the boxes it
+// fits: their mean width over the detector's, and how far their centre
+// lies below the detector's, in box heights (a detector's boxes are often
+// wider than a person, or start above the head). A box of that detector
+// whose silhouette the fit cannot read (too little foreground in it: a
+// person the colour of the ground, a box far too loose) takes that mean
+// instead of passing the detector's bias through. Its horizontal shift is
+// not learnt: people walk both ways, and a detector's error across is not
+// one-sided.
+class FitBias {
+public:
+    // A box the detector gave and the fit it got.
+    void learn(const Box &detector, const Box &fitted);
+    // Whether enough boxes were learnt for the mean to be used.
+    bool known() const;
+    // b with the learnt width and centre (b itself while not known()).
+    Box apply(const Box &b) const;
+
+private:
+    double n_ = 0, width_ = 1, down_ = 0;
+};
+
 } // namespace ctrack
 
 #endif

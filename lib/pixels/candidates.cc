@@ -243,11 +243,13 @@ void PixelCandidates::mask_only(int64_t t_us, const Planes &img, const Vec<Track
 bool PixelCandidates::silhouettes_clear(int64_t t_us) const
 {
     // Twice the model's fast start (background.cc): the people of the
-    // first frames are out of it. A camera that moved has its background
-    // in the wrong place, and a mask over a quarter foreground is no
-    // picture of a few people.
+    // first frames are out of it. A camera that moved in that time has its
+    // background in the wrong place (and a panning camera's frames do not
+    // all show it: a frame can match the last one unshifted), and a mask
+    // over a quarter foreground is no picture of a few people.
     constexpr double kLearntFor = 1.0, kMaxForegroundShare = 0.25;
-    if (!have_mask_ || background_.age_s(t_us) < kLearntFor || background_.camera_moved())
+    if (!have_mask_ || background_.age_s(t_us) < kLearntFor ||
+        background_.since_camera_moved_s(t_us) < kLearntFor)
         return false;
     const int w = background_.width(), h = background_.height();
     long fg = 0;

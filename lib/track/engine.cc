@@ -718,9 +718,19 @@ void Engine::fit_reported(ImageSize image)
                               std::max(b.top, o.top);
             covered = ix > 0 && iy > 0 && ix * iy > kMaxCovered * b.width * b.height;
         }
-        if (covered || !pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]) ||
-            !clip_box(image, &fitted_[i]))
+        if (covered) {
             fitted_[i] = b;
+        } else if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]) &&
+                   clip_box(image, &fitted_[i])) {
+            if (narrow)
+                state_.learnt.fit_bias.learn(b, fitted_[i]);
+        } else {
+            // No silhouette to read: a detector's box takes what the fit
+            // does to its boxes on average.
+            fitted_[i] = narrow ? state_.learnt.fit_bias.apply(b) : b;
+            if (!clip_box(image, &fitted_[i]))
+                fitted_[i] = b;
+        }
     }
     for (size_t i = 0; i < rows.size(); i++) {
         rows[i].left = (float)fitted_[i].left;

@@ -13,6 +13,7 @@
 
 #include "ctrack/ctrack.h"
 #include "track/assign.h"
+#include "pixels/box_fit.h"
 #include "pixels/candidates.h"
 #include "track/gate.h"
 #include "meanshift/meanshift.h"
@@ -47,6 +48,7 @@ struct SceneModels {
     PersonSize size;
     SizeGate size_gate; // a detector's people's height (size_gate)
     ScoreScale scores;  // a detector's scale of scores (confirm_score)
+    FitBias fit_bias;   // what the fit does to a detector's boxes (refine_boxes)
 };
 
 // Everything a step changes but the background model, in one value: a
