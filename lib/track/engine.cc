@@ -720,10 +720,12 @@ void Engine::fit_reported(ImageSize image)
         }
         if (covered) {
             fitted_[i] = b;
-        } else if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i]) &&
-                   clip_box(image, &fitted_[i])) {
+        } else if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i])) {
+            // Learnt as fitted, before any clipping at the image's edge.
             if (narrow)
                 state_.learnt.fit_bias.learn(b, fitted_[i]);
+            if (!clip_box(image, &fitted_[i]))
+                fitted_[i] = b;
         } else {
             // No silhouette to read: a detector's box takes what the fit
             // does to its boxes on average.
