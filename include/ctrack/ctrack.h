@@ -282,8 +282,10 @@ typedef struct ct_config {
      * than the silhouette is narrowed to it, and with the people's size
      * known a box cut short of a person's height grows to the feet. Where
      * the silhouette does not show one person clearly (the background
-     * model's first second, a frame the camera moved, another track over
-     * a sixth of the box) the box is left as it is. With detections it
+     * model's first second, the second after the camera moved, another
+     * track over a sixth of the box) the box is left as it is; a
+     * detector's box too faint in the foreground to fit takes what the
+     * fit did to that detector's boxes on average. With detections it
      * makes the tracker keep a background model, about 0.2 ms a 768x576
      * frame. 0 reports the boxes unfitted and, with detections, reads no
      * background (docs/API.md, "Boxes fitted to the silhouette").
