@@ -129,6 +129,18 @@ static const ct_track *near_x(const ct_track *tr, size_t n, double x)
     return best;
 }
 
+/* The scene run for 90 frames with the fit and without, on a still camera:
+ * the last frame's track nearest the last person's centre in each (*fit,
+ * *raw; on and off hold the tracks). */
+static void fitted_and_raw(const person *ps, int n, ct_track *on, ct_track *off,
+                           const ct_track **fit, const ct_track **raw)
+{
+    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
+    const double x = centre_at(&ps[n - 1], 89);
+    *fit = near_x(on, a, x);
+    *raw = near_x(off, b, x);
+}
+
 /* People at several depths in the left half who teach the tracker their
  * size (true boxes), walking slowly; the one under test comes in on the
  * right, alone. */
@@ -150,9 +162,8 @@ START_TEST(cut_at_the_chest_grows_to_the_feet)
     ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
                        .enter = 60, .coat_like_ground = true, .box_cut = 0.45, .box_wide = 1};
     ct_track on[16], off[16];
-    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
-    const double x = centre_at(&ps[n - 1], 89);
-    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
     const double tall = ps[n - 1].height;
     /* Unfitted: the cut box. Fitted: head to feet. */
     ck_assert_float_le(raw->height, 0.6 * tall);
@@ -169,9 +180,9 @@ START_TEST(too_wide_is_narrowed)
     ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
                        .enter = 60, .box_cut = 1, .box_wide = 1.3};
     ct_track on[16], off[16];
-    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
-    const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
-    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
+    const double w = width_of(&ps[n - 1]);
     ck_assert_float_ge(raw->width, 1.25 * w);
     ck_assert_msg(fit->width <= 1.15 * w && fit->width >= 0.7 * w, "fitted width %g, person %g",
                   fit->width, w);
@@ -191,9 +202,9 @@ START_TEST(a_faint_person_takes_the_detectors_learnt_width)
     ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
                        .enter = 60, .box_cut = 1, .box_wide = 1.4, .faint = true};
     ct_track on[16], off[16];
-    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
-    const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
-    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
+    const double w = width_of(&ps[n - 1]);
     ck_assert_float_ge(raw->width, 1.35 * w);
     ck_assert_msg(fit->width <= 1.25 * w && fit->width >= 0.8 * w, "width %g, person %g",
                   fit->width, w);
@@ -233,9 +244,9 @@ START_TEST(a_box_to_the_side_moves_to_the_person)
     ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
                        .enter = 60, .box_cut = 1, .box_wide = 1, .box_shift = 0.2};
     ct_track on[16], off[16];
-    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
     const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
-    const ct_track *fit = near_x(on, a, x), *raw = near_x(off, b, x);
     const double raw_off = raw->left + raw->width / 2 - x;
     const double fit_off = fit->left + fit->width / 2 - x;
     ck_assert_msg(raw_off > 0.15 * w, "unfitted %g off", raw_off);
