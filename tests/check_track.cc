@@ -99,12 +99,14 @@ START_TEST(track_follows_its_detections)
     ct_detection d = test_det(100, 50, 40, 100, 0.9f);
     t.start(d, 0.05, 0, 0);
     for (int k = 1; k <= 20; k++) {
-        t.predict(0.1, 0.5);
+        t.predict(0.1, 0.5, 0.5);
         d.left += 2;
-        t.correct(d, 0.05, 0, k * 100000);
+        t.correct(d, 0.05, 0.05, 0, k * 100000);
     }
     const Box b = t.box();
     ck_assert_double_eq_tol(b.left, d.left, 1.0);
+    // The reported box's model, under the same noises, is the same.
+    ck_assert_double_eq_tol(t.shown.box().left, b.left, 1e-9);
     ck_assert_double_eq_tol(b.height, 100, 0.5);
     ck_assert_double_eq_tol(t.cx.v, 20, 2); // 2 px a step of 0.1 s
     ck_assert_int_eq(t.hits, 21);
@@ -362,7 +364,7 @@ END_TEST
 
 // Innovations as the filter expects them leave the scale at 1 and boxes at
 // the estimate; larger ones raise it in time (0.3 s's time constant, in
-// log terms), and the reported box goes toward the detection.
+// log terms).
 START_TEST(scene_motion_follows_the_innovations_in_time)
 {
     SceneMotion m;
@@ -371,7 +373,7 @@ START_TEST(scene_motion_follows_the_innovations_in_time)
         m.learn(0.04);
     }
     ck_assert_double_eq_tol(m.scale(), 1, 1e-9);
-    ck_assert_double_eq_tol(m.follow(), 0, 1e-12);
+    ck_assert_double_eq(m.noise(), 1);
     // A scene four times less predictable than motion_noise says: the
     // innovations' normalized square is 4 over the scale learnt so far.
     // After 0.3 s at 10 and at 30 frames/s, the same scale: 4^(1 - 1/e).
@@ -387,7 +389,6 @@ START_TEST(scene_motion_follows_the_innovations_in_time)
     const double want = std::pow(4.0, 1 - std::exp(-1.0));
     ck_assert_double_eq_tol(a.scale(), want, 1e-9);
     ck_assert_double_eq_tol(b.scale(), want, 1e-9);
-    ck_assert(a.follow() > 0 && a.follow() < 1);
     // No innovation, or no time, changes nothing; one wild innovation
     // counts as about three standard deviations (a normalized square of 9).
     SceneMotion c = a;
@@ -401,6 +402,46 @@ START_TEST(scene_motion_follows_the_innovations_in_time)
     ck_assert_double_eq_tol(c.scale(), 9.0 * a.scale(), 1e-6);
     c.reset();
     ck_assert_double_eq(c.scale(), 1);
+}
+END_TEST
+
+// The reported boxes' noise factor: successive innovations of one sign (a
+// filter that lags) lower it, of alternating signs (one that chases the
+// jitter) raise it, uncorrelated ones leave it; at the same rate in time
+// at 10 and 30 frames/s; within its bounds; and only when asked to whiten.
+START_TEST(scene_noise_whitens_the_innovations)
+{
+    SceneMotion lag, lag30, chase, white, off;
+    for (int k = 0; k < 10; k++) {
+        lag.observe_pair(1, 1, 1, 1);
+        lag.learn(0.1, true);
+        chase.observe_pair(1, -1, -1, 1);
+        chase.learn(0.1, true);
+        white.observe_pair(1, 0, 0, 1);
+        white.learn(0.1, true);
+        off.observe_pair(1, 1, 1, 1);
+        off.learn(0.1);
+    }
+    for (int k = 0; k < 30; k++) {
+        lag30.observe_pair(1, 1, 1, 1);
+        lag30.learn(0.1 / 3, true);
+    }
+    // A correlation of 1 for 1 s: a factor of 1/e.
+    ck_assert_double_eq_tol(lag.noise(), std::exp(-1.0), 1e-9);
+    ck_assert_double_eq_tol(lag30.noise(), lag.noise(), 1e-9);
+    ck_assert_double_eq_tol(chase.noise(), std::exp(1.0), 1e-9);
+    ck_assert_double_eq(white.noise(), 1);
+    ck_assert_double_eq(off.noise(), 1);
+    for (int k = 0; k < 100; k++) {
+        lag.observe_pair(2, 0, 3, 0);
+        lag.learn(0.1, true);
+        chase.observe_pair(-3, 0, 2, 0);
+        chase.learn(0.1, true);
+    }
+    ck_assert_double_eq_tol(lag.noise(), 0.25, 1e-12);
+    ck_assert_double_eq_tol(chase.noise(), 10, 1e-9);
+    lag.reset();
+    ck_assert_double_eq(lag.noise(), 1);
 }
 END_TEST
 
@@ -460,6 +501,7 @@ int main(void)
     tcase_add_test(tc, person_size_fits_the_ground_line);
     tcase_add_test(tc, person_size_never_slopes_the_wrong_way);
     tcase_add_test(tc, scene_motion_follows_the_innovations_in_time);
+    tcase_add_test(tc, scene_noise_whitens_the_innovations);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

@@ -149,10 +149,22 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     // The scene's motion is learnt from a detector's boxes (the pixels'
     // blobs need a still camera, and jitter on their own), on the tracks
     // that were confirmed before this step: a tentative track's first
-    // steps tell little.
-    if (t.state == CT_TRACK_CONFIRMED && cfg_.source == CT_SOURCE_DETECTIONS)
+    // steps tell little. The reported boxes' filter learns its own, and
+    // how its successive innovations correlate.
+    const double shown_noise = cfg_.detection_noise * state_.learnt.shown.noise();
+    if (t.state == CT_TRACK_CONFIRMED && cfg_.source == CT_SOURCE_DETECTIONS) {
         state_.learnt.motion.observe(t.centre_nis(d, cfg_.detection_noise));
-    t.correct(d, cfg_.detection_noise, index, t_us);
+        const double sd = shown_noise * std::max(d.height, 1.0f);
+        double nx, ny;
+        t.shown.normalized_innovation(d, sd, &nx, &ny);
+        state_.learnt.shown.observe(0.5 * (nx * nx + ny * ny));
+        if (t.shown_age == t.age - 1)
+            state_.learnt.shown.observe_pair(nx, ny, t.shown_nx, t.shown_ny);
+        t.shown_nx = nx;
+        t.shown_ny = ny;
+        t.shown_age = t.age;
+    }
+    t.correct(d, cfg_.detection_noise, shown_noise, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
     else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&
@@ -526,8 +538,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
 
     Stopwatch sw;
     const double motion_noise = cfg_.motion_noise * std::sqrt(state_.learnt.motion.scale());
+    const double shown_motion_noise =
+        cfg_.motion_noise * std::sqrt(state_.learnt.shown.scale());
     for (Track &t : state_.tracks)
-        t.predict(time.dt, motion_noise);
+        t.predict(time.dt, motion_noise, shown_motion_noise);
     ns[CT_STAGE_PREDICT] += sw.lap();
     if (find_candidates(time.scene_us, img, &dets, &n))
         sw.lap(); // its stages counted themselves
@@ -548,6 +562,7 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     }
 
     state_.learnt.motion.learn(time.dt);
+    state_.learnt.shown.learn(time.dt, true);
     learn_sizes(dets, t_us, image);
     if (cfg_.source == CT_SOURCE_PIXELS && !img.empty())
         note_live(t_us);
@@ -628,18 +643,12 @@ bool Engine::clip_box(ImageSize image, Box *b) const
     return true;
 }
 
-bool Engine::reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const
+bool Engine::reported_box(const Track &t, ImageSize image, Box *out) const
 {
-    Box b = t.box();
-    if (t.last_update_us == t_us && !t.followed) {
-        // Where the scene moves less predictably than the filter assumes,
-        // its estimate lags: the box goes toward the detection.
-        const double f = state_.learnt.motion.follow();
-        b.left += f * (t.seen.left - b.left);
-        b.top += f * (t.seen.top - b.top);
-        b.width += f * (t.seen.width - b.width);
-        b.height += f * (t.seen.height - b.height);
-    }
+    // Where the box is fitted to the person's silhouette, the fit starts
+    // from the steady estimate and places it; elsewhere the reported
+    // boxes' own filter does.
+    Box b = fit_boxes_ ? t.box() : t.shown.box();
     if (!clip_box(image, &b))
         return false;
     *out = b;
@@ -659,7 +668,7 @@ void Engine::report(int64_t t_us, ImageSize image)
             !hidden_in_view(t, (size_t)(&t - state_.tracks.data())))
             continue;
         Box b;
-        if (!reported_box(t, t_us, image, &b))
+        if (!reported_box(t, image, &b))
             continue;
         ct_track o = {};
         o.id = t.id;

@@ -44,7 +44,8 @@ struct SceneClock {
 // model is the pixels', which commit and roll back their own update.)
 struct SceneModels {
     explicit SceneModels(const ct_config &cfg) { size_gate.set_gate(cfg.size_gate); }
-    SceneMotion motion;
+    SceneMotion motion; // the association's motion model's
+    SceneMotion shown;  // the reported boxes' (Track::shown)
     PersonSize size;
     SizeGate size_gate; // a detector's people's height (size_gate)
     ScoreScale scores;  // a detector's scale of scores (confirm_score)
@@ -200,10 +201,10 @@ private:
     // A box clipped to the image when clip_boxes asks; false when nothing
     // of it is left.
     bool clip_box(ImageSize image, Box *b) const;
-    // A track's reported box: its estimate, drawn toward its detection
-    // where the scene moves less predictably than the filter assumes, and
+    // A track's reported box: its reported boxes' model's estimate (the
+    // association's where the box is then fitted to the silhouette),
     // clipped to the image when asked; false when clipping leaves nothing.
-    bool reported_box(const Track &t, int64_t t_us, ImageSize image, Box *out) const;
+    bool reported_box(const Track &t, ImageSize image, Box *out) const;
 
     const ct_config cfg_;
     EngineState state_;

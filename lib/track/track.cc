@@ -42,20 +42,51 @@ double inside_fraction(const Box &b, int w, int h)
     return iw > 0 && ih > 0 ? iw * ih / (b.width * b.height) : 0;
 }
 
-Box Track::box() const
+Box BoxMotion::box() const
 {
     double bw = std::max(w.x, kMinSide), bh = std::max(h.x, kMinSide);
     return Box{cx.x - bw / 2, cy.x - bh / 2, bw, bh};
+}
+
+void BoxMotion::init(const ct_detection &d, double sd, double vsd)
+{
+    cx.init(d.left + d.width / 2.0, sd, vsd);
+    cy.init(d.top + d.height / 2.0, sd, vsd);
+    w.init(d.width, sd, vsd * kSizeNoiseRatio);
+    h.init(d.height, sd, vsd * kSizeNoiseRatio);
+}
+
+void BoxMotion::predict(double dt, double motion_noise)
+{
+    double accel = motion_noise * std::max(h.x, kMinSide);
+    cx.predict(dt, accel);
+    cy.predict(dt, accel);
+    w.predict(dt, accel * kSizeNoiseRatio);
+    h.predict(dt, accel * kSizeNoiseRatio);
+}
+
+void BoxMotion::update(const ct_detection &d, double sd)
+{
+    cx.update(d.left + d.width / 2.0, sd);
+    cy.update(d.top + d.height / 2.0, sd);
+    w.update(d.width, sd);
+    h.update(d.height, sd);
+}
+
+void BoxMotion::normalized_innovation(const ct_detection &d, double sd, double *nx,
+                                      double *ny) const
+{
+    *nx = (d.left + d.width / 2.0 - cx.x) / std::sqrt(cx.innovation_var(sd));
+    *ny = (d.top + d.height / 2.0 - cy.x) / std::sqrt(cy.innovation_var(sd));
 }
 
 void Track::start(const ct_detection &d, double detection_noise, int index, int64_t t_us)
 {
     double sd = detection_noise * std::max<double>(d.height, kMinSide);
     double vsd = kInitialSpeedSd * std::max<double>(d.height, kMinSide);
-    cx.init(d.left + d.width / 2.0, sd, vsd);
-    cy.init(d.top + d.height / 2.0, sd, vsd);
-    w.init(d.width, sd, vsd * kSizeNoiseRatio);
-    h.init(d.height, sd, vsd * kSizeNoiseRatio);
+    init(d, sd, vsd);
+    shown = static_cast<const BoxMotion &>(*this);
+    shown_age = -1;
     age = 1;
     hits = 1;
     last_update_us = t_us;
@@ -77,14 +108,10 @@ double Track::from_start(const Box &b) const
     return std::hypot(b.left + b.width / 2 - start_x, b.top + b.height / 2 - start_y);
 }
 
-void Track::predict(double dt, double motion_noise)
+void Track::predict(double dt, double motion_noise, double shown_noise)
 {
-    double hgt = std::max(h.x, kMinSide);
-    double accel = motion_noise * hgt;
-    cx.predict(dt, accel);
-    cy.predict(dt, accel);
-    w.predict(dt, accel * kSizeNoiseRatio);
-    h.predict(dt, accel * kSizeNoiseRatio);
+    BoxMotion::predict(dt, motion_noise);
+    shown.predict(dt, shown_noise);
     age++;
     det_index = -1;
     followed = false;
@@ -104,13 +131,11 @@ double Track::centre_innovation_sd(double detection_noise) const
     return std::sqrt(std::max(cx.innovation_var(sd), cy.innovation_var(sd)));
 }
 
-void Track::correct(const ct_detection &d, double detection_noise, int index, int64_t t_us)
+void Track::correct(const ct_detection &d, double detection_noise, double shown_noise,
+                    int index, int64_t t_us)
 {
-    double sd = detection_noise * std::max<double>(d.height, kMinSide);
-    cx.update(d.left + d.width / 2.0, sd);
-    cy.update(d.top + d.height / 2.0, sd);
-    w.update(d.width, sd);
-    h.update(d.height, sd);
+    update(d, detection_noise * std::max<double>(d.height, kMinSide));
+    shown.update(d, shown_noise * std::max<double>(d.height, kMinSide));
     hits++;
     last_update_us = t_us;
     seen_h = d.height;
@@ -138,6 +163,7 @@ void Track::follow(double detection_noise)
     w.v = 0;
     h.v = 0;
     followed = true;
+    shown = static_cast<const BoxMotion &>(*this);
 }
 
 bool occluded(const Vec<Track> &tracks, size_t i)

@@ -34,10 +34,35 @@ struct ImageSize {
     bool known() const { return width > 0 && height > 0; }
 };
 
-struct Track {
+// A box's constant-velocity model: its centre, width and height.
+struct BoxMotion {
+    Axis cx, cy, w, h;
+
+    Box box() const;
+    // Its first box, d, known to within sd on each coordinate, its velocity
+    // to within vsd (the size's to within a fraction of it).
+    void init(const ct_detection &d, double sd, double vsd);
+    // dt seconds ahead, under an acceleration noise of motion_noise box
+    // heights per second squared on the centre (the size's a fraction).
+    void predict(double dt, double motion_noise);
+    // Corrected by box d, measured to within sd on each coordinate.
+    void update(const ct_detection &d, double sd);
+    // Box d's centre innovation on each axis, over its standard deviation.
+    void normalized_innovation(const ct_detection &d, double sd, double *nx, double *ny) const;
+};
+
+struct Track : BoxMotion {
     uint64_t id = 0;              // 0 until confirmed
     int state = CT_TRACK_TENTATIVE;
-    Axis cx, cy, w, h;
+    // The motion model that association reads is the one above; the boxes
+    // reported come from this one, the same model under the noises
+    // SceneMotion learns for them (Engine::update()): it follows a
+    // detector's boxes as closely as their innovations say they can be
+    // followed, where association needs a steady prediction.
+    BoxMotion shown;
+    // shown's last centre innovation (normalized) and the step it came at.
+    double shown_nx = 0, shown_ny = 0;
+    int shown_age = -1;
     int age = 0, hits = 0;
     int64_t last_update_us = 0;
     float seen_h = 0; // the height of the last detection
@@ -74,25 +99,28 @@ struct Track {
     int tmpl = -1;
     int64_t tmpl_us = 0;
 
-    Box box() const;
     // How far box b's centre lies from where the track started.
     double from_start(const Box &b) const;
-    // The motion model started at detection d (position noise
+    // The motion models started at detection d (position noise
     // detection_noise box heights) and the bookkeeping of a first hit.
     void start(const ct_detection &d, double detection_noise, int index, int64_t t_us);
     // Predicts dt seconds ahead (acceleration noise motion_noise box heights
-    // per second squared) and forgets the last step's match and mean shift.
-    void predict(double dt, double motion_noise);
+    // per second squared; shown_noise for the reported box's model) and
+    // forgets the last step's match and mean shift.
+    void predict(double dt, double motion_noise, double shown_noise);
     // The centre's normalized innovation squared for detection d (the mean
     // of both axes), before correct().
     double centre_nis(const ct_detection &d, double detection_noise) const;
     // The standard deviation of a detection's centre about the prediction
     // on the less certain axis (a detection's noise at the track's height).
     double centre_innovation_sd(double detection_noise) const;
-    // Corrects the motion model by detection d, and records the hit.
-    void correct(const ct_detection &d, double detection_noise, int index, int64_t t_us);
+    // Corrects the motion models by detection d (shown's with its own
+    // noise, shown_noise box heights), and records the hit.
+    void correct(const ct_detection &d, double detection_noise, double shown_noise, int index,
+                 int64_t t_us);
     // Corrects the motion model by where mean shift followed the person
-    // (this->ms), trusted less than a detection.
+    // (this->ms), trusted less than a detection; the reported box is then
+    // that estimate.
     void follow(double detection_noise);
 };
 
