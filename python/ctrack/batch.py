@@ -69,8 +69,9 @@ VIDEO_EXTENSIONS = {".mp4", ".mkv", ".avi", ".mov", ".webm", ".y4m", ".mpg", ".m
 SUMMARY_FIELDS = ["input", "output", "status", "frames", "tracks", "seconds",
                   "frames_per_second", "error"]
 
-# Set in a pool's worker processes (_worker_init): once set, the input in
-# progress stops at its next frame (Ctrl-C in the main process).
+# Set in a pool's worker processes (_worker_init) and in a Ray task
+# (_ray_task): once set, the input in progress stops at its next frame
+# (Ctrl-C in the main process; on Ray, SIGINT or ray.cancel()).
 _STOP = None
 
 
@@ -301,7 +302,7 @@ def track_one(job, outdir, params=None, library=None, force=False):
         row["error"] = str(e) or type(e).__name__
         _remove(tmp)
         return row
-    except BaseException:  # KeyboardInterrupt, a Ray task cancelled: no partial left
+    except BaseException:  # KeyboardInterrupt, a Ray worker's exit: no partial left
         _remove(tmp)
         raise
     finally:
@@ -430,12 +431,47 @@ class _Pool:
             self.pool.shutdown(wait=True, cancel_futures=True)
 
 
+class _Flag:
+    """A stop request that a signal handler can set (threading.Event's
+    is_set, without its lock, which a handler must not wait on)."""
+
+    def __init__(self):
+        self._set = False
+
+    def set(self):
+        self._set = True
+
+    def is_set(self):
+        return self._set
+
+
+def _ray_task(job, outdir, *args):
+    """track_one as a Ray task. Ctrl-C to the process group and ray.cancel()
+    (which Ray delivers as _thread.interrupt_main()) both reach it as
+    SIGINT; as in a pool's worker, that stops the input at its next frame
+    instead of raising KeyboardInterrupt in it: the signal and then the
+    cancel, two interrupts in a row, could abort Ray itself (its task
+    manager's check that a task completing was pending)."""
+    import signal
+    global _STOP
+    stop = _Flag()
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: stop.set())
+    _STOP = stop
+    try:
+        return track_one(job, outdir, *args)
+    finally:
+        _STOP = None
+        signal.signal(signal.SIGINT, previous)
+
+
 class _Ray:
-    """The inputs as Ray tasks."""
+    """The inputs as Ray tasks, at most as many at once as the cluster has
+    CPUs for them: none waits queued in Ray, so Ctrl-C cancels only running
+    tasks, and the inputs never submitted are marked interrupted here."""
 
     def __init__(self, jobs, outdir, args, address, workers):
         import ray  # optional: pip install ray
-        self.ray, self.outdir = ray, outdir
+        self.ray, self.outdir, self.args = ray, outdir, args
         if address is not True and not ray.is_initialized():
             env = {k: os.environ[k] for k in ("CTRACK_LIBRARY",) if k in os.environ}
             if address == "local":
@@ -443,18 +479,30 @@ class _Ray:
                          log_to_driver=False, runtime_env={"env_vars": env})
             else:
                 ray.init(address=address, log_to_driver=False, runtime_env={"env_vars": env})
-        task = ray.remote(num_cpus=1)(track_one)
-        self.refs = {task.remote(j, outdir, *args): j for j in jobs}
+        self.task = ray.remote(num_cpus=1)(_ray_task)
+        self.at_once = max(1, int(workers or ray.cluster_resources().get("CPU", 1)))
+        self.waiting = list(jobs)
+        self.refs = {}
+
+    def _submit(self, running):
+        while self.waiting and len(running) < self.at_once:
+            j = self.waiting.pop(0)
+            ref = self.task.remote(j, self.outdir, *self.args)
+            self.refs[ref] = j
+            running.append(ref)
 
     def results(self):
-        pending = list(self.refs)
-        while pending:
-            ready, pending = self.ray.wait(pending, num_returns=1)
+        running = []
+        self._submit(running)
+        while running:
+            ready, running = self.ray.wait(running, num_returns=1)
+            self._submit(running)
             yield self.ray.get(ready[0])
 
     def interrupt(self, reported):
-        """Cancels every task not reported (a running one gets a
-        KeyboardInterrupt, and removes its partial file); their rows."""
+        """Cancels every task not reported (a running one stops at its next
+        frame, and removes its partial file); their rows, and those of the
+        inputs never submitted."""
         left = {ref: j for ref, j in self.refs.items() if j["input"] not in reported}
         for ref in left:
             try:
@@ -467,6 +515,8 @@ class _Ray:
                 rows.append(self.ray.get(ref, timeout=10))
             except Exception:  # cancelled, or its worker gone
                 rows.append(dict(_interrupted_row(j, self.outdir), error="interrupted"))
+        rows += [_interrupted_row(j, self.outdir) for j in self.waiting]
+        self.waiting = []
         return rows
 
     def close(self):

@@ -373,6 +373,32 @@ def test_ctrl_c_on_ray(tmp_path, long_videos):
     assert len(rows) == 4 and any(r["status"] == "interrupted" for r in rows), rows
 
 
+@pytest.mark.parametrize("how", ["signal", "interrupt_main"])
+def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how):
+    """A Ray task (batch._ray_task, run here in the main thread as Ray runs
+    it) meets Ctrl-C as SIGINT and ray.cancel() as _thread.interrupt_main():
+    either stops its input at the next frame with an "interrupted" row and
+    no partial file, with no KeyboardInterrupt (two in a row could abort
+    Ray), and the handler before it is back after it."""
+    import _thread
+    import signal
+    import threading
+    (job,) = batch.find_jobs(long_videos[:1])
+    before = signal.getsignal(signal.SIGINT)
+    send = ((lambda: os.kill(os.getpid(), signal.SIGINT)) if how == "signal"
+            else _thread.interrupt_main)
+    timer = threading.Timer(0.5, send)
+    timer.start()
+    try:
+        row = batch._ray_task(job, str(tmp_path))
+    finally:
+        timer.cancel()
+    assert row["status"] == "interrupted", row
+    assert 0 < row["frames"] < 568, row
+    assert not [f for f in os.listdir(tmp_path) if f.endswith(".partial")]
+    assert signal.getsignal(signal.SIGINT) is before
+
+
 def test_a_bad_output_folder_is_one_line(tmp_path):
     """An output folder that is a file, or that cannot be written in: one
     line, exit status 2, no traceback, nothing tracked."""
