@@ -154,9 +154,8 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     const double shown_noise = cfg_.detection_noise * state_.learnt.shown.noise();
     if (t.state == CT_TRACK_CONFIRMED && cfg_.source == CT_SOURCE_DETECTIONS) {
         state_.learnt.motion.observe(t.centre_nis(d, cfg_.detection_noise));
-        const double sd = shown_noise * std::max(d.height, 1.0f);
         double nx, ny;
-        t.shown.normalized_innovation(d, sd, &nx, &ny);
+        t.shown.normalized_innovation(d, shown_noise, &nx, &ny);
         state_.learnt.shown.observe(0.5 * (nx * nx + ny * ny));
         if (t.shown_age == t.age - 1)
             state_.learnt.shown.observe_pair(nx, ny, t.shown_nx, t.shown_ny);
@@ -729,19 +728,19 @@ void Engine::fit_reported(ImageSize image)
         }
         if (covered) {
             fitted_[i] = b;
-        } else if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i])) {
+            continue;
+        }
+        if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i])) {
             // Learnt as fitted, before any clipping at the image's edge.
             if (narrow)
                 state_.learnt.fit_bias.learn(b, fitted_[i]);
-            if (!clip_box(image, &fitted_[i]))
-                fitted_[i] = b;
         } else {
             // No silhouette to read: a detector's box takes what the fit
             // does to its boxes on average.
             fitted_[i] = narrow ? state_.learnt.fit_bias.apply(b) : b;
-            if (!clip_box(image, &fitted_[i]))
-                fitted_[i] = b;
         }
+        if (!clip_box(image, &fitted_[i]))
+            fitted_[i] = b;
     }
     for (size_t i = 0; i < rows.size(); i++) {
         rows[i].left = (float)fitted_[i].left;

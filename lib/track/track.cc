@@ -73,9 +73,10 @@ void BoxMotion::update(const ct_detection &d, double sd)
     h.update(d.height, sd);
 }
 
-void BoxMotion::normalized_innovation(const ct_detection &d, double sd, double *nx,
-                                      double *ny) const
+void BoxMotion::normalized_innovation(const ct_detection &d, double detection_noise,
+                                      double *nx, double *ny) const
 {
+    const double sd = detection_noise * std::max<double>(d.height, kMinSide);
     *nx = (d.left + d.width / 2.0 - cx.x) / std::sqrt(cx.innovation_var(sd));
     *ny = (d.top + d.height / 2.0 - cy.x) / std::sqrt(cy.innovation_var(sd));
 }

@@ -47,8 +47,10 @@ struct BoxMotion {
     void predict(double dt, double motion_noise);
     // Corrected by box d, measured to within sd on each coordinate.
     void update(const ct_detection &d, double sd);
-    // Box d's centre innovation on each axis, over its standard deviation.
-    void normalized_innovation(const ct_detection &d, double sd, double *nx, double *ny) const;
+    // Box d's centre innovation on each axis, over its standard deviation
+    // (d measured to within detection_noise of its height).
+    void normalized_innovation(const ct_detection &d, double detection_noise, double *nx,
+                               double *ny) const;
 };
 
 struct Track : BoxMotion {
