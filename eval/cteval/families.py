@@ -62,8 +62,12 @@ FAMILIES = {
     # The same camera a few pixels off: the frames cut by 4 pixels in each
     # direction, at eight offsets (the first is the top left corner). The
     # picture is the same; what moves is where each pixel falls in the
-    # working scale's blocks, so the spread is the tracker's luck.
-    "shift": [("cut at %d, %d" % (dx, dy), "crop=iw-4:ih-4:%d:%d" % (dx, dy), shifted(dx, dy))
+    # working scale's blocks, so the spread is the tracker's luck. The cut
+    # is made on full-resolution chroma: on 4:2:0 frames ffmpeg's crop
+    # rounds an odd offset down to an even one, and the odd offsets would
+    # repeat the even ones.
+    "shift": [("cut at %d, %d" % (dx, dy), "format=yuv444p,crop=iw-4:ih-4:%d:%d" % (dx, dy),
+               shifted(dx, dy))
               for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1), (2, 2), (3, 1), (1, 3), (4, 4))],
 }
 

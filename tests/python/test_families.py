@@ -2,16 +2,26 @@
 ground truth and detections are moved as its ffmpeg filter moves the
 frames, so a variant scores as the frames as they are do."""
 import os
+import subprocess
 
+import numpy as np
 import pytest
 
-from cteval.data import moved_boxes
+from cteval.data import moved_boxes, video
 from cteval.families import FAMILIES, RATE_FAMILY, half_mirrored, run_variant, shifted
 
 from conftest import TOP
 
 CT_TRACK = os.environ.get("CTRACK_CT_TRACK", os.path.join(TOP, "build", "tools", "ct-track"))
 BUILD = os.path.dirname(os.path.dirname(CT_TRACK))
+
+
+def read_luma(y4m, w, h):
+    """The luma plane of a Y4M file's first frame (w x h)."""
+    with open(y4m, "rb") as f:
+        data = f.read(2 * w * h + 4096)
+    start = data.index(b"FRAME\n") + len("FRAME\n")
+    return np.frombuffer(data[start:start + w * h], dtype=np.uint8).reshape(h, w)
 
 
 def test_boxes_move_with_the_frames(tmp_path):
@@ -46,9 +56,29 @@ def test_a_cut_variant_scores_as_the_frames_do(tmp_path):
     # itself is checked too.
     assert shifted(4, 4)((100, 50, 40, 120), 640, 480) == (96, 46, 40, 120)
     label, vf, move = FAMILIES["shift"][-1]
-    assert label == "cut at 4, 4" and vf == "crop=iw-4:ih-4:4:4"
+    assert label == "cut at 4, 4" and vf.endswith("crop=iw-4:ih-4:4:4")
     s = run_variant(BUILD, "TUD-Campus", vf, move, str(tmp_path / "tracks.txt"))
     assert s["MOTA"] > 10 and s["IDF1"] > 30, s
+
+
+def test_every_cut_moves_the_picture_by_its_offset(tmp_path):
+    # The shift family is there to move each pixel to another place of the
+    # working scale's blocks: an odd offset must cut an odd number of
+    # columns and rows. (ffmpeg's crop on 4:2:0 frames rounds an odd offset
+    # down to an even one, and the family would read half the pictures it
+    # names.) Each variant's first frame is TUD-Campus's first frame moved
+    # by its offset, luma byte for byte.
+    src = video("TUD-Campus")
+    w, h = 640, 480
+    first = read_luma(src, w, h)
+    for label, vf, move in FAMILIES["shift"]:
+        dx, dy = (int(v) for v in label[len("cut at "):].split(", "))
+        assert move((100, 50, 40, 120), w, h) == (100 - dx, 50 - dy, 40, 120)
+        out = str(tmp_path / "cut.y4m")
+        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", src, "-frames:v", "1", "-vf", vf,
+                        "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out], check=True)
+        cut = read_luma(out, w - 4, h - 4)
+        assert (cut == first[dy:dy + h - 4, dx:dx + w - 4]).all(), label
 
 
 def test_a_lower_rate_scores_the_frames_it_keeps(tmp_path):
