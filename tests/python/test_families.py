@@ -65,9 +65,9 @@ def test_every_cut_moves_the_picture_by_its_offset(tmp_path):
     # The shift family is there to move each pixel to another place of the
     # working scale's blocks: an odd offset must cut an odd number of
     # columns and rows. (ffmpeg's crop on 4:2:0 frames rounds an odd offset
-    # down to an even one, and the family would read half the pictures it
-    # names.) Each variant's first frame is TUD-Campus's first frame moved
-    # by its offset, luma byte for byte.
+    # down to an even one: the family would read five pictures, every pixel
+    # in the same place of its block.) Each variant's first frame is
+    # TUD-Campus's first frame moved by its offset, luma byte for byte.
     src = video("TUD-Campus")
     w, h = 640, 480
     first = read_luma(src, w, h)
