@@ -4,11 +4,11 @@ frames, so a variant scores as the frames as they are do."""
 import os
 import subprocess
 
-import numpy as np
 import pytest
 
 from cteval.data import moved_boxes, video
 from cteval.families import FAMILIES, RATE_FAMILY, half_mirrored, run_variant, shifted
+from cteval.y4m import i420_planes, open_y4m
 
 from conftest import TOP
 
@@ -16,12 +16,10 @@ CT_TRACK = os.environ.get("CTRACK_CT_TRACK", os.path.join(TOP, "build", "tools",
 BUILD = os.path.dirname(os.path.dirname(CT_TRACK))
 
 
-def read_luma(y4m, w, h):
-    """The luma plane of a Y4M file's first frame (w x h)."""
-    with open(y4m, "rb") as f:
-        data = f.read(2 * w * h + 4096)
-    start = data.index(b"FRAME\n") + len("FRAME\n")
-    return np.frombuffer(data[start:start + w * h], dtype=np.uint8).reshape(h, w)
+def first_luma(y4m):
+    """The luma plane of a Y4M file's first frame."""
+    w, h, _, frames = open_y4m(y4m)
+    return i420_planes(frames[0], w, h)[0]
 
 
 def test_boxes_move_with_the_frames(tmp_path):
@@ -69,15 +67,16 @@ def test_every_cut_moves_the_picture_by_its_offset(tmp_path):
     # in the same place of its block.) Each variant's first frame is
     # TUD-Campus's first frame moved by its offset, luma byte for byte.
     src = video("TUD-Campus")
-    w, h = 640, 480
-    first = read_luma(src, w, h)
+    first = first_luma(src)
+    h, w = first.shape
     for label, vf, move in FAMILIES["shift"]:
         dx, dy = (int(v) for v in label[len("cut at "):].split(", "))
         assert move((100, 50, 40, 120), w, h) == (100 - dx, 50 - dy, 40, 120)
         out = str(tmp_path / "cut.y4m")
         subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", src, "-frames:v", "1", "-vf", vf,
                         "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out], check=True)
-        cut = read_luma(out, w - 4, h - 4)
+        cut = first_luma(out)
+        assert cut.shape == (h - 4, w - 4), label
         assert (cut == first[dy:dy + h - 4, dx:dx + w - 4]).all(), label
 
 
