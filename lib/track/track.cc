@@ -21,6 +21,12 @@ constexpr double kFollowSizeNoiseRatio = 4.0;
 // The part of a track's box another must cover for it to be occluded.
 constexpr double kOccludedFraction = 0.2;
 
+// A quantity in box heights (a noise, a speed) at detection d's height.
+double at_height(double per_height, const ct_detection &d)
+{
+    return per_height * std::max<double>(d.height, kMinSide);
+}
+
 } // namespace
 
 double iou(const Box &a, const Box &b)
@@ -76,15 +82,15 @@ void BoxMotion::update(const ct_detection &d, double sd)
 void BoxMotion::normalized_innovation(const ct_detection &d, double detection_noise,
                                       double *nx, double *ny) const
 {
-    const double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    const double sd = at_height(detection_noise, d);
     *nx = (d.left + d.width / 2.0 - cx.x) / std::sqrt(cx.innovation_var(sd));
     *ny = (d.top + d.height / 2.0 - cy.x) / std::sqrt(cy.innovation_var(sd));
 }
 
 void Track::start(const ct_detection &d, double detection_noise, int index, int64_t t_us)
 {
-    double sd = detection_noise * std::max<double>(d.height, kMinSide);
-    double vsd = kInitialSpeedSd * std::max<double>(d.height, kMinSide);
+    double sd = at_height(detection_noise, d);
+    double vsd = at_height(kInitialSpeedSd, d);
     init(d, sd, vsd);
     shown = static_cast<const BoxMotion &>(*this);
     shown_age = -1;
@@ -122,7 +128,7 @@ void Track::predict(double dt, double motion_noise, double shown_noise)
 
 double Track::centre_nis(const ct_detection &d, double detection_noise) const
 {
-    const double sd = detection_noise * std::max<double>(d.height, kMinSide);
+    const double sd = at_height(detection_noise, d);
     return 0.5 * (cx.nis(d.left + d.width / 2.0, sd) + cy.nis(d.top + d.height / 2.0, sd));
 }
 
@@ -135,8 +141,8 @@ double Track::centre_innovation_sd(double detection_noise) const
 void Track::correct(const ct_detection &d, double detection_noise, double shown_noise,
                     int index, int64_t t_us)
 {
-    update(d, detection_noise * std::max<double>(d.height, kMinSide));
-    shown.update(d, shown_noise * std::max<double>(d.height, kMinSide));
+    update(d, at_height(detection_noise, d));
+    shown.update(d, at_height(shown_noise, d));
     hits++;
     last_update_us = t_us;
     seen_h = d.height;
