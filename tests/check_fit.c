@@ -1,7 +1,8 @@
 /* Boxes fitted to the silhouette (ct_config.refine_boxes), on synthetic
  * frames with a detector's boxes: a box cut at the chest, where the coat is
  * the colour of the ground, grows to the feet; a box 30% too wide is
- * narrowed, and a faint person's box as the detector's others were; on a
+ * narrowed, one that runs past the feet ends near them, and a faint
+ * person's box is narrowed as the detector's others were; on a
  * camera that pans, the boxes are as without the fit. */
 #include <math.h>
 #include <stdbool.h>
@@ -154,13 +155,23 @@ static int crowd(person *ps)
     return 4;
 }
 
+/* The person under test: in on the right, walking left, alone; it enters
+ * at frame `enter`, and its detector box is cut to `cut` of its height and
+ * `wide` times its width. */
+static person newcomer(int enter, double cut, double wide)
+{
+    return (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
+                    .enter = enter, .box_cut = cut, .box_wide = wide};
+}
+
 START_TEST(cut_at_the_chest_grows_to_the_feet)
 {
     person ps[6];
     int n = crowd(ps);
     /* In from frame 60, its coat the ground's colour, its box cut there. */
-    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
-                       .enter = 60, .coat_like_ground = true, .box_cut = 0.45, .box_wide = 1};
+    ps[n] = newcomer(60, 0.45, 1);
+    ps[n].coat_like_ground = true;
+    n++;
     ct_track on[16], off[16];
     const ct_track *fit, *raw;
     fitted_and_raw(ps, n, on, off, &fit, &raw);
@@ -177,8 +188,7 @@ START_TEST(too_wide_is_narrowed)
 {
     person ps[6];
     int n = crowd(ps);
-    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
-                       .enter = 60, .box_cut = 1, .box_wide = 1.3};
+    ps[n++] = newcomer(60, 1, 1.3);
     ct_track on[16], off[16];
     const ct_track *fit, *raw;
     fitted_and_raw(ps, n, on, off, &fit, &raw);
@@ -186,6 +196,26 @@ START_TEST(too_wide_is_narrowed)
     ck_assert_float_ge(raw->width, 1.25 * w);
     ck_assert_msg(fit->width <= 1.15 * w && fit->width >= 0.7 * w, "fitted width %g, person %g",
                   fit->width, w);
+}
+END_TEST
+
+START_TEST(past_the_feet_ends_at_the_feet)
+{
+    /* A detector's box that runs a fifth of the person's height past the
+     * feet ends near them: a line the feet have not reached is not
+     * crossed. The box's top stays at the head. */
+    person ps[6];
+    int n = crowd(ps);
+    ps[n++] = newcomer(60, 1.2, 1);
+    ct_track on[16], off[16];
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
+    const double tall = ps[n - 1].height, feet = ps[n - 1].feet;
+    ck_assert_float_ge(raw->top + raw->height, feet + 0.15 * tall);
+    ck_assert_msg(fabs(fit->top + fit->height - feet) < 0.08 * tall, "fitted feet %g, person's %g",
+                  fit->top + fit->height, feet);
+    ck_assert_msg(fabs(fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g", fit->top,
+                  feet - tall);
 }
 END_TEST
 
@@ -199,8 +229,9 @@ START_TEST(a_faint_person_takes_the_detectors_learnt_width)
     int n = crowd(ps);
     for (int i = 0; i < n; i++)
         ps[i].box_wide = 1.4;
-    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
-                       .enter = 60, .box_cut = 1, .box_wide = 1.4, .faint = true};
+    ps[n] = newcomer(60, 1, 1.4);
+    ps[n].faint = true;
+    n++;
     ct_track on[16], off[16];
     const ct_track *fit, *raw;
     fitted_and_raw(ps, n, on, off, &fit, &raw);
@@ -220,8 +251,7 @@ START_TEST(a_moving_camera_is_left_alone)
      * to the bit. */
     person ps[6];
     int n = crowd(ps);
-    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
-                       .enter = 0, .box_cut = 0.45, .box_wide = 1.3};
+    ps[n++] = newcomer(0, 0.45, 1.3);
     ct_track on[16], off[16];
     const size_t a = run(ps, n, 90, 4, 1, on), b = run(ps, n, 90, 4, 0, off);
     ck_assert_uint_eq(a, b);
@@ -241,8 +271,9 @@ START_TEST(a_box_to_the_side_moves_to_the_person)
      * the fit moves them most of the way back; without it they stay. */
     person ps[6];
     int n = crowd(ps);
-    ps[n++] = (person){.x = 250, .feet = 200, .height = 0.7 * 200 - 40, .speed = -0.8,
-                       .enter = 60, .box_cut = 1, .box_wide = 1, .box_shift = 0.2};
+    ps[n] = newcomer(60, 1, 1);
+    ps[n].box_shift = 0.2;
+    n++;
     ct_track on[16], off[16];
     const ct_track *fit, *raw;
     fitted_and_raw(ps, n, on, off, &fit, &raw);
@@ -302,6 +333,7 @@ int main(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, cut_at_the_chest_grows_to_the_feet);
     tcase_add_test(tc, too_wide_is_narrowed);
+    tcase_add_test(tc, past_the_feet_ends_at_the_feet);
     tcase_add_test(tc, a_faint_person_takes_the_detectors_learnt_width);
     tcase_add_test(tc, a_moving_camera_is_left_alone);
     tcase_add_test(tc, a_box_to_the_side_moves_to_the_person);

@@ -279,7 +279,8 @@ typedef struct ct_config {
      * fitted to the person's silhouette in the foreground: its centre
      * moves 0.7 of the way toward the body's axis and toward the middle
      * between the head's top and the feet; a detector's box much wider
-     * than the silhouette is narrowed to it, and with the people's size
+     * than the silhouette is narrowed to it, its height moves 0.7 of the
+     * way to the silhouette's head to feet, and with the people's size
      * known a box cut short of a person's height grows to the feet. Where
      * the silhouette does not show one person clearly (the background
      * model's first second, the second after the camera moved, another

@@ -124,7 +124,7 @@ double silhouette_width(const View &v, int x0, int x1, int y0, int y1, int axis)
 } // namespace
 
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
-             const PersonSize *size, bool narrow, Box *out)
+             const PersonSize *size, bool detector, Box *out)
 {
     if (!(b.width > 0 && b.height > 0) || scale < 1)
         return false;
@@ -178,7 +178,7 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     Box sized = b;
     if (size)
         grow_cut(v, *size, c0, c1, &sized);
-    const double sil_w = narrow ? silhouette_width(v, x0, x1, by0, by1, axis) : 0;
+    const double sil_w = detector ? silhouette_width(v, x0, x1, by0, by1, axis) : 0;
     if (sil_w > 0 && sized.width > kWidthMargin * sil_w) {
         sized.left += (sized.width - kWidthMargin * sil_w) / 2;
         sized.width = kWidthMargin * sil_w;
@@ -191,15 +191,20 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     const double cx = cut_side ? b.left + b.width / 2 : axis_x;
     const double tall = (bottom + 1 - top) * v.s;
     const bool head_near = std::fabs(head_y - b.top) <= kHeadSlack * b.height;
-    const double cy = sized.height != b.height ? sized.top + sized.height / 2
-                      : !cut_foot && head_near && tall >= kMinHeight * b.height &&
-                                tall <= kMaxHeight * b.height
-                          ? (top + bottom + 1) * v.s / 2
-                          : b.top + b.height / 2;
     *out = sized;
     out->left += follow * (cx - (sized.left + sized.width / 2));
-    out->top = sized.height != b.height ? sized.top
-                                        : b.top + follow * (cy - (b.top + b.height / 2));
+    if (sized.height != b.height)
+        return true; // grown to the feet: its top is the head's already
+    // The silhouette's head-to-feet extent, where it is the whole person's.
+    const bool extent = !cut_foot && head_near && tall >= kMinHeight * b.height &&
+                        tall <= kMaxHeight * b.height;
+    const double mid = b.top + b.height / 2;
+    const double cy = mid + (extent ? follow * ((top + bottom + 1) * v.s / 2 - mid) : 0);
+    // A detector's box often runs past the feet or above the head; the
+    // pixels' own boxes are the blob's extent already.
+    if (extent && detector)
+        out->height = b.height + follow * (tall - b.height);
+    out->top = cy - out->height / 2;
     return true;
 }
 

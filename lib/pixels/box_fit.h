@@ -20,12 +20,15 @@ constexpr double kFitFollow = 0.7;
 // into *out, its centre moved `follow` of the way to the silhouette's (1:
 // all the way); false, *out untouched, where the mask does not show one
 // person in it clearly (too little or too much foreground, no head or feet
-// on the body's axis). Its size is kept, but with the people's size known
-// (`size`, or null) a box cut short of a person's height (below the head
-// it has at its top) grows to the feet below, or to that height; and when
-// `narrow`, a box much wider than the silhouette is narrowed to it.
+// on the body's axis). With the people's size known (`size`, or null) a
+// box cut short of a person's height (below the head it has at its top)
+// grows to the feet below, or to that height. A `detector`'s box (not the
+// pixels' own, which is its blob's extent) much wider than the silhouette
+// is narrowed to it, and its height moves `follow` of the way to the
+// silhouette's head-to-feet extent where that is the whole person's; other
+// boxes keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
-             const PersonSize *size, bool narrow, Box *out);
+             const PersonSize *size, bool detector, Box *out);
 
 // What the fit does to a detector's boxes, learnt online from the boxes it
 // fits: their mean width over the detector's, and how far their centre

@@ -259,10 +259,10 @@ bool PixelCandidates::silhouettes_clear(int64_t t_us) const
     return fg <= kMaxForegroundShare * w * h;
 }
 
-bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool narrow, Box *out) const
+bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool detector, Box *out) const
 {
     return have_mask_ && fit_box(blobs_.cleaned(), background_.width(), background_.height(),
-                                 background_.scale(), b, kFitFollow, &size, narrow, out);
+                                 background_.scale(), b, kFitFollow, &size, detector, out);
 }
 
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const

@@ -47,7 +47,7 @@ public:
     // is not mostly foreground (a moving camera, a light switched).
     bool silhouettes_clear(int64_t t_us) const;
     // Box b fitted to this step's silhouette (fit_box()), or false.
-    bool fit(const Box &b, const PersonSize &size, bool narrow, Box *out) const;
+    bool fit(const Box &b, const PersonSize &size, bool detector, Box *out) const;
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part

@@ -706,9 +706,9 @@ void Engine::fit_reported(ImageSize image)
     // is not its own.
     constexpr double kMaxCovered = 1.0 / 6;
     Vec<ct_track> &rows = state_.reported;
-    // A detector's boxes are often looser than a person; the pixels' own
-    // are the blobs' extents already.
-    const bool narrow = cfg_.source == CT_SOURCE_DETECTIONS;
+    // A detector's boxes are often looser or taller than a person; the
+    // pixels' own are the blobs' extents already.
+    const bool detector = cfg_.source == CT_SOURCE_DETECTIONS;
     auto box_of = [](const ct_track &o) { return Box{o.left, o.top, o.width, o.height}; };
     // Each box is fitted against the others as they were before the fit:
     // the fitted ones are written once all are known.
@@ -730,14 +730,14 @@ void Engine::fit_reported(ImageSize image)
             fitted_[i] = b;
             continue;
         }
-        if (pixels_.fit(b, state_.learnt.size, narrow, &fitted_[i])) {
+        if (pixels_.fit(b, state_.learnt.size, detector, &fitted_[i])) {
             // Learnt as fitted, before any clipping at the image's edge.
-            if (narrow)
+            if (detector)
                 state_.learnt.fit_bias.learn(b, fitted_[i]);
         } else {
             // No silhouette to read: a detector's box takes what the fit
             // does to its boxes on average.
-            fitted_[i] = narrow ? state_.learnt.fit_bias.apply(b) : b;
+            fitted_[i] = detector ? state_.learnt.fit_bias.apply(b) : b;
         }
         if (!clip_box(image, &fitted_[i]))
             fitted_[i] = b;

@@ -374,7 +374,7 @@ def test_ctrl_c_on_ray(tmp_path, long_videos):
 
 
 @pytest.mark.parametrize("how", ["signal", "interrupt_main"])
-def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how):
+def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how, monkeypatch):
     """A Ray task (batch._ray_task, run here in the main thread as Ray runs
     it) meets Ctrl-C as SIGINT and ray.cancel() as _thread.interrupt_main():
     either stops its input at the next frame with an "interrupted" row and
@@ -382,17 +382,23 @@ def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how):
     Ray), and the handler before it is back after it."""
     import _thread
     import signal
-    import threading
+    from ctrack import video
     (job,) = batch.find_jobs(long_videos[:1])
     before = signal.getsignal(signal.SIGINT)
     send = ((lambda: os.kill(os.getpid(), signal.SIGINT)) if how == "signal"
             else _thread.interrupt_main)
-    timer = threading.Timer(0.5, send)
-    timer.start()
-    try:
-        row = batch._ray_task(job, str(tmp_path))
-    finally:
-        timer.cancel()
+
+    # The interrupt arrives while the task reads its 20th frame, whatever
+    # the machine's speed (a timer can come after the last frame).
+    class Interrupting(video.Video):
+        def __iter__(self):
+            for k, frame in enumerate(super().__iter__(), 1):
+                if k == 20:
+                    send()
+                yield frame
+
+    monkeypatch.setattr(video, "Video", Interrupting)
+    row = batch._ray_task(job, str(tmp_path))
     assert row["status"] == "interrupted", row
     assert 0 < row["frames"] < 568, row
     assert not [f for f in os.listdir(tmp_path) if f.endswith(".partial")]
