@@ -464,6 +464,11 @@ def _ray_task(job, outdir, *args):
         signal.signal(signal.SIGINT, previous)
 
 
+# Seconds the running tasks have to stop on their own after Ctrl-C, before
+# they are cancelled (_Ray.interrupt()).
+_RAY_STOP_GRACE_S = 3.0
+
+
 class _Ray:
     """The inputs as Ray tasks, at most as many at once as the cluster has
     CPUs for them: none waits queued in Ray, so Ctrl-C cancels only running
@@ -500,14 +505,26 @@ class _Ray:
             yield self.ray.get(ready[0])
 
     def interrupt(self, reported):
-        """Cancels every task not reported (a running one stops at its next
-        frame, and removes its partial file); their rows, and those of the
-        inputs never submitted."""
+        """Stops every task not reported (a running one stops at its next
+        frame, and removes its partial file), cancelling those the signal
+        did not reach; their rows, and those of the inputs never submitted."""
         left = {ref: j for ref, j in self.refs.items() if j["input"] not in reported}
-        for ref in left:
+        # Ctrl-C to the process group reached the tasks too, and each stops
+        # at its next frame: only those still running after a grace are
+        # cancelled. A cancel that races a task's own return aborts the
+        # driver (Ray's task manager: "Tried to complete task that was not
+        # pending"), one interrupted run in some ten on a busy machine.
+        running = list(left)
+        if running:
+            try:
+                _, running = self.ray.wait(running, num_returns=len(running),
+                                           timeout=_RAY_STOP_GRACE_S)
+            except Exception:  # Ray itself went down with the signal
+                pass
+        for ref in running:
             try:
                 self.ray.cancel(ref)
-            except Exception:  # Ray itself went down with the signal
+            except Exception:
                 pass
         rows = []
         for ref, j in left.items():

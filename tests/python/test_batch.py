@@ -298,17 +298,22 @@ def long_videos(tmp_path_factory):
 
 # The batch's main on a local Ray started as start_ray() starts it (so that
 # under make sanitize Ray's servers run without the sanitizers' runtimes).
+# CT_TEST_RAY_GRACE, when set, is the seconds the running tasks have to stop
+# on their own before they are cancelled.
 RAY_MAIN = """
+import os
 import sys
 import ray
 from ctrack import batch
 from test_batch import start_ray
+if "CT_TEST_RAY_GRACE" in os.environ:
+    batch._RAY_STOP_GRACE_S = float(os.environ["CT_TEST_RAY_GRACE"])
 start_ray(ray)
 sys.exit(batch.main(sys.argv[1:]))
 """
 
 
-def interrupt_batch(tmp_path, videos, to_group, ray=False, grace=5.0):
+def interrupt_batch(tmp_path, videos, to_group, ray=False, grace=5.0, ray_grace=None):
     """Runs python -m ctrack.batch over the videos (on two workers, or on a
     local Ray), sends SIGINT (to its process group, as a terminal's Ctrl-C
     does, or to it alone) once an input is being written, and returns (exit
@@ -321,6 +326,8 @@ def interrupt_batch(tmp_path, videos, to_group, ray=False, grace=5.0):
     cmd = [sys.executable, "-c", RAY_MAIN] if ray else [sys.executable, "-m", "ctrack.batch"]
     e = env()
     e["PYTHONPATH"] += os.pathsep + os.path.dirname(os.path.abspath(__file__))
+    if ray_grace is not None:
+        e["CT_TEST_RAY_GRACE"] = str(ray_grace)
     p = subprocess.Popen(cmd + args, env=e, start_new_session=True, stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     t0 = time.monotonic()
@@ -362,15 +369,23 @@ def test_ctrl_c_stops_the_run_cleanly(tmp_path, long_videos, to_group):
         assert (os.path.basename(r["output"]) in files) == (r["status"] == "ok"), (r, files)
 
 
-def test_ctrl_c_on_ray(tmp_path, long_videos):
-    """The same on Ray: exit status 130 within 15 s, no partial file."""
-    status, seconds, files, err = interrupt_batch(tmp_path, long_videos[:4], True, ray=True,
-                                                  grace=15.0)
+@pytest.mark.parametrize("to_group", [True, False], ids=["to the group", "to the main process"])
+def test_ctrl_c_on_ray(tmp_path, long_videos, to_group):
+    """The same on Ray: exit status 130 within 15 s, no partial file. To the
+    group, the tasks stop on their own; to the main process alone, they are
+    cancelled (at once here: these inputs end within the usual grace) and
+    stop part way."""
+    status, seconds, files, err = interrupt_batch(tmp_path, long_videos[:4], to_group, ray=True,
+                                                  grace=15.0,
+                                                  ray_grace=None if to_group else 0)
     assert status == 130, err
     assert seconds < 15.0, "%.1f s from the signal to the exit" % seconds
     assert not [f for f in files if f.endswith(".partial")], files
     rows = list(summary(str(tmp_path / "out")).values())
     assert len(rows) == 4 and any(r["status"] == "interrupted" for r in rows), rows
+    if not to_group:
+        assert any(r["status"] == "interrupted" and 0 < int(r["frames"]) < 568
+                   for r in rows), rows
 
 
 @pytest.mark.parametrize("how", ["signal", "interrupt_main"])
