@@ -46,13 +46,15 @@ sanitize: deps
 # The thread tests under ThreadSanitizer (GCC's): trackers in several
 # threads at once, on the public detections and on TUD-Campus's frames in
 # the three modes, each giving what it gives alone, with no data race
-# reported (TSan stops at its first report).
+# reported (TSan stops at its first report). TSan runs code 5-15 times
+# slower, so the tests' timeouts are stretched as for the emulated build.
 TSAN_BUILD ?= build-tsan
 tsan: deps
 	@[ -f $(TSAN_BUILD)/build.ninja ] || meson setup $(TSAN_BUILD) \
 	    -Db_sanitize=thread -Dbuildtype=debugoptimized $(MESON_OPTS)
 	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-	    meson test -C $(TSAN_BUILD) threads pixels --print-errorlogs
+	    meson test -C $(TSAN_BUILD) threads pixels --timeout-multiplier 4 \
+	    --print-errorlogs
 
 # meson does not refresh the loader's cache: without ldconfig, programs
 # linked to the new library (and `import ctrack`) would not find it.
