@@ -467,6 +467,11 @@ def _ray_task(job, outdir, *args):
 # Seconds the running tasks have to stop on their own after Ctrl-C, before
 # they are cancelled (_Ray.interrupt()).
 _RAY_STOP_GRACE_S = 3.0
+# How long an interrupted run waits for each task's row once it stopped or
+# was cancelled; a task that never answers is reported as such.
+_RAY_ANSWER_S = 10.0
+# The longest a run waits on Ray before it looks at Ctrl-C again.
+_RAY_WAIT_SLICE_S = 0.2
 
 
 class _Ray:
@@ -500,7 +505,11 @@ class _Ray:
         running = []
         self._submit(running)
         while running:
-            ready, running = self.ray.wait(running, num_returns=1)
+            # In slices: a wait without a timeout holds Ctrl-C (to this
+            # process alone) until a task ends, which may be hours away.
+            ready, running = self.ray.wait(running, num_returns=1, timeout=_RAY_WAIT_SLICE_S)
+            if not ready:
+                continue
             self._submit(running)
             yield self.ray.get(ready[0])
 
@@ -529,9 +538,12 @@ class _Ray:
         rows = []
         for ref, j in left.items():
             try:
-                rows.append(self.ray.get(ref, timeout=10))
-            except Exception:  # cancelled, or its worker gone
-                rows.append(dict(_interrupted_row(j, self.outdir), error="interrupted"))
+                rows.append(self.ray.get(ref, timeout=_RAY_ANSWER_S))
+            except Exception as e:  # cancelled, or its worker gone or stuck
+                late = type(e).__name__ == "GetTimeoutError"
+                rows.append(dict(_interrupted_row(j, self.outdir), error=(
+                    "interrupted; its task did not stop within %g s" % _RAY_ANSWER_S
+                    if late else "interrupted")))
         rows += [_interrupted_row(j, self.outdir) for j in self.waiting]
         self.waiting = []
         return rows

@@ -384,8 +384,13 @@ def test_ctrl_c_on_ray(tmp_path, long_videos, to_group):
     rows = list(summary(str(tmp_path / "out")).values())
     assert len(rows) == 4 and any(r["status"] == "interrupted" for r in rows), rows
     if not to_group:
-        assert any(r["status"] == "interrupted" and 0 < int(r["frames"]) < 568
-                   for r in rows), rows
+        # Cancelled: a running input stopped part way (without the cancel
+        # the running ones run to their end, or say in their error that
+        # they did not stop; the inputs never started say so). Only one is
+        # asked for: on a loaded machine a task can end in the moment
+        # before the cancel reaches it.
+        assert any(r["status"] == "interrupted" and r["error"] == "interrupted" and
+                   int(r["frames"]) < 568 for r in rows), rows
 
 
 @pytest.mark.parametrize("how", ["signal", "interrupt_main"])
