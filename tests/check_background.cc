@@ -585,6 +585,41 @@ START_TEST(groups_split_by_the_learnt_size)
 }
 END_TEST
 
+// The people's size speaks for blobs whose feet are at most a person's
+// height above the highest feet it has seen; above, its line falls to
+// nothing and would cut a blob there into slivers one person of a few
+// pixels wide each, so the prior decides there, as before the size is
+// known: a blob 14 columns wide and 30 rows tall stays whole.
+START_TEST(the_size_speaks_only_near_the_feet_it_saw)
+{
+    const int s = Background::kStartScale;
+    // People 40 rows tall with their feet at row 100, 20 at row 70: the
+    // line's horizon at row 40; it speaks from a person's height (20 rows)
+    // above row 70.
+    PersonSize size;
+    size.reset(H * s);
+    for (int k = 0; k < 40; k++) {
+        size.observe((60 + k % 3 - 1) * s, 40 * s, 16 * s);
+        size.observe((50 + k % 3 - 1) * s, 20 * s, 8 * s);
+    }
+    size.learn();
+    ck_assert(size.known());
+    ck_assert(size.speaks_at(100 * s));
+    ck_assert(size.speaks_at(55 * s));
+    ck_assert(!size.speaks_at(45 * s));
+    ck_assert(!PersonSize().speaks_at(100 * s));
+    Vec<uint8_t> m(W * H, 0);
+    fill(m, 20, 15, 34, 45); // its feet at row 45, where the line says 5 rows
+    BlobFinder bf;
+    Classifier cls;
+    Vec<Rect> out;
+    bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
+    ck_assert_int_eq((int)out.size(), 1);
+    ck_assert_int_eq(out[0].x0, 20);
+    ck_assert_int_eq(out[0].x1, 34);
+}
+END_TEST
+
 // Fragments stacked one above the other merge while their union is at most
 // 1.2 of the height the people's size expects there: a person's torso and
 // legs do (1.15 heights), two people one behind the other in a column of
@@ -1199,6 +1234,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, start_with_timestamps_far_apart);
     tcase_add_test(tc, fragments_merge_and_groups_split);
     tcase_add_test(tc, groups_split_by_the_learnt_size);
+    tcase_add_test(tc, the_size_speaks_only_near_the_feet_it_saw);
     tcase_add_test(tc, fragments_merge_up_to_a_person_height);
     tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, pair_splits_between_heads);

@@ -451,9 +451,9 @@ bool BlobFinder::speck(const Rect &r, int s, const PersonSize &size) const
         area += count_nonzero(m.at(r.x0, y), r.x1 - r.x0);
     // A speck or a fragment: under a part of the person who would stand
     // where the blob's feet are (working pixels; while the size model knows
-    // nothing, under the prior's smallest person).
+    // nothing there, under the prior's smallest person).
     const int bh = r.y1 - r.y0;
-    if (size.known()) {
+    if (size.speaks_at(r.y1 * s)) {
         const double person_h = size.height_at(r.y1 * s) / s;
         const double person_w = size.width_at(r.y1 * s) / s;
         return area < kMinAreaFraction * person_h * person_w ||
@@ -482,8 +482,10 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
     Impl &m = *impl_;
     const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
     // A group: wider than one person of this height (of the size model's
-    // width where it knows it).
-    const double person_w = size.known() ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
+    // width where it knows it: where it does not, the width of a person at
+    // the bottom row of a body cut at the chest cut it into slivers).
+    const double person_w =
+        size.speaks_at(r.y1 * s) ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
     const int parts = (int)std::lround(bw / person_w);
     // The predicted centres of the tracks inside, those closer than
     // kMinCentreGap heights to the one before counted once.

@@ -22,6 +22,10 @@ constexpr uint32_t kMinBand = 5, kMinSamples = 20;
 // "The people's size: its constants": the median splits
 // TUD-Campus's groups into too many).
 CT_TUNABLE(kWidthQuantile, "CTRACK_WIDTH_QUANTILE", 0.75);
+// How far above the highest feet seen, in the height of a person there,
+// the model speaks for a blob's size (PersonSize::speaks_at(); docs/tuning.md,
+// "Where the people's size speaks").
+CT_TUNABLE(kFeetMargin, "CTRACK_FEET_MARGIN", 1.0);
 // A band's counts are halved past this, so that the model keeps learning.
 constexpr uint32_t kMaxBand = 1000;
 // A band weighs at most this many samples in the fit.
@@ -95,12 +99,14 @@ void PersonSize::learn()
     double sw = 0, sy = 0, sh = 0, syy = 0, syh = 0;
     uint32_t total = 0;
     int bands = 0;
+    top_feet_ = image_height_;
     for (int b = 0; b < kBands; b++) {
         total += count_[b];
         if (count_[b] < kMinBand)
             continue;
         const double h = median_of(hist_[b], kBins, count_[b], kLowest, kStep);
         const double y = foot_sum_[b] / count_[b];
+        top_feet_ = std::min(top_feet_, y);
         const double w = std::min<double>(count_[b], kMaxWeight);
         sw += w;
         sy += w * y;
@@ -120,6 +126,11 @@ void PersonSize::learn()
     aspect_ = quantile_of(aspect_hist_, kBins, aspect_count_, kWidthQuantile, kLowestAspect,
                           kAspectStep);
     known_ = true;
+}
+
+bool PersonSize::speaks_at(double y) const
+{
+    return known_ && y >= top_feet_ - kFeetMargin * height_at(top_feet_);
 }
 
 double PersonSize::height_at(double y) const

@@ -26,6 +26,12 @@ public:
 
     // Whether enough was observed for the fit to speak.
     bool known() const { return known_; }
+    // Whether it speaks for a person whose feet are at row y: known, and y
+    // no higher than a person's height above the highest feet it has seen.
+    // Above them its line is an extrapolation that falls to nothing at the
+    // horizon it guesses, which on a street-level camera, whose people's
+    // feet fill a narrow band of rows, it guesses badly.
+    bool speaks_at(double y) const;
     // The expected height (frame pixels) of a person whose feet are at row
     // y, and the width three people in four there stay under; 0 while
     // unknown.
@@ -57,6 +63,7 @@ private:
     uint64_t samples_ = 0;
     bool known_ = false;
     double slope_ = 0, intercept_ = 0, aspect_ = 0.4, typical_ = 0;
+    double top_feet_ = 0; // the highest band's mean feet row
 };
 
 } // namespace ctrack
