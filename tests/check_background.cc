@@ -587,9 +587,9 @@ END_TEST
 
 // The people's size speaks for blobs whose feet are at most a person's
 // height above the highest feet it has seen; above, its line falls to
-// nothing and would cut a blob there into slivers one person of a few
-// pixels wide each, so the prior decides there, as before the size is
-// known: a blob 14 columns wide and 30 rows tall stays whole.
+// nothing and would cut a blob there into slivers a few pixels wide, so
+// the prior decides there, as before the size is known: a blob 14 columns
+// wide and 30 rows tall stays whole.
 START_TEST(the_size_speaks_only_near_the_feet_it_saw)
 {
     const int s = Background::kStartScale;

@@ -482,8 +482,8 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
     Impl &m = *impl_;
     const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
     // A group: wider than one person of this height (of the size model's
-    // width where it knows it: where it does not, the width of a person at
-    // the bottom row of a body cut at the chest cut it into slivers).
+    // width where it speaks: above the feet it has seen, its line's person,
+    // a few pixels tall, would cut the blob into slivers).
     const double person_w =
         size.speaks_at(r.y1 * s) ? size.width_at(r.y1 * s) / s : bh / kPersonAspect;
     const int parts = (int)std::lround(bw / person_w);
