@@ -540,10 +540,10 @@ class _Ray:
             try:
                 rows.append(self.ray.get(ref, timeout=_RAY_ANSWER_S))
             except Exception as e:  # cancelled, or its worker gone or stuck
-                late = type(e).__name__ == "GetTimeoutError"
+                # Ray's GetTimeoutError is a TimeoutError.
                 rows.append(dict(_interrupted_row(j, self.outdir), error=(
                     "interrupted; its task did not stop within %g s" % _RAY_ANSWER_S
-                    if late else "interrupted")))
+                    if isinstance(e, TimeoutError) else "interrupted")))
         rows += [_interrupted_row(j, self.outdir) for j in self.waiting]
         self.waiting = []
         return rows

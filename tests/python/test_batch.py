@@ -393,6 +393,30 @@ def test_ctrl_c_on_ray(tmp_path, long_videos, to_group):
                    int(r["frames"]) < 568 for r in rows), rows
 
 
+def test_a_ray_task_that_does_not_answer_is_marked(tmp_path, monkeypatch):
+    """After Ctrl-C, a Ray task whose row does not come within the wait is
+    marked as such in its row; one cancelled, or whose worker is gone, is
+    "interrupted" as those stopped at their next frame."""
+    class FakeRay:
+        def wait(self, refs, num_returns, timeout):
+            return [], refs
+
+        def cancel(self, ref):
+            pass
+
+        def get(self, ref, timeout):
+            raise TimeoutError() if ref == "stuck" else RuntimeError("cancelled")
+
+    monkeypatch.setattr(batch, "_RAY_STOP_GRACE_S", 0)
+    r = object.__new__(batch._Ray)
+    r.ray, r.outdir, r.waiting = FakeRay(), str(tmp_path), []
+    r.refs = {"stuck": {"input": "a.y4m", "name": "a"}, "gone": {"input": "b.y4m", "name": "b"}}
+    rows = {row["input"]: row for row in r.interrupt(set())}
+    assert rows["a.y4m"]["status"] == "interrupted"
+    assert rows["a.y4m"]["error"] == "interrupted; its task did not stop within 10 s"
+    assert rows["b.y4m"]["error"] == "interrupted"
+
+
 @pytest.mark.parametrize("how", ["signal", "interrupt_main"])
 def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how, monkeypatch):
     """A Ray task (batch._ray_task, run here in the main thread as Ray runs
