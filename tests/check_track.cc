@@ -6,6 +6,7 @@
 
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -482,12 +483,77 @@ START_TEST(fit_bias_learns_what_the_fit_does)
 }
 END_TEST
 
+// A person's silhouette in a 100 x 200 mask (scale 1): head, torso and legs,
+// its head's top at `top` and its feet at row 160, centred on column 50;
+// with `behind`, another person's head and shoulders just above, joined to
+// it (someone behind, farther up the image).
+static void draw_standing(uint8_t *m, int top, bool behind)
+{
+    std::fill(m, m + 100 * 200, 0);
+    auto disc = [&](double cx, double cy, double r) {
+        for (int y = 0; y < 200; y++)
+            for (int x = 0; x < 100; x++)
+                if ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy) < r * r)
+                    m[y * 100 + x] = 255;
+    };
+    auto rect = [&](int x0, int x1, int y0, int y1) {
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++)
+                m[y * 100 + x] = 255;
+    };
+    const int h = 160 - top;
+    disc(50, top + 0.06 * h, 0.06 * h);
+    rect(40, 60, top + (int)(0.12 * h), top + (int)(0.75 * h));
+    rect(41, 49, top + (int)(0.75 * h), 160);
+    rect(51, 59, top + (int)(0.75 * h), 160);
+    if (behind) {
+        disc(50, top - 5, 5);
+        rect(42, 58, top - 1, top + 1);
+    }
+}
+
+// The fit moves a box up or down to the silhouette's head-to-feet extent
+// only where that extent is one person's: with the people's size known
+// (96 pixels tall at feet row 160), an extent from another person's head
+// behind down to this one's feet (110 pixels) leaves the box where it was
+// vertically; without that head the same box is moved to the person.
+START_TEST(fit_moves_a_box_only_to_one_persons_extent)
+{
+    PersonSize size;
+    size.reset(200);
+    for (int k = 0; k < 400; k++) {
+        const double y = 100 + k % 100, h = 0.6 * y;
+        size.observe(y - h, h, 0.35 * h);
+    }
+    size.learn();
+    ck_assert(size.known() && size.speaks_at(160));
+    ck_assert_double_eq_tol(size.height_at(160), 96, 5);
+    static uint8_t m[100 * 200];
+    const Box b{36, 60, 28, 100}; // a detector's box, its top at the head
+    Box out;
+    draw_standing(m, 60, true);
+    // Without the size the joined extent (rows 50-159) moves the box up.
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, nullptr, true, &out));
+    ck_assert_double_lt(out.top, b.top - 3);
+    // With it, the box keeps its rows.
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, &size, true, &out));
+    ck_assert_double_eq_tol(out.top, b.top, 0.5);
+    ck_assert_double_eq_tol(out.height, b.height, 0.5);
+    // One person alone, the box 8 rows too low: moved up toward the head.
+    draw_standing(m, 64, false);
+    const Box low{36, 72, 28, 96};
+    ck_assert(fit_box(m, 100, 200, 1, low, kFitFollow, &size, true, &out));
+    ck_assert_double_lt(out.top, low.top - 4);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("track");
     TCase *tc = tcase_create("models");
     tcase_add_test(tc, filter_learns_a_constant_velocity);
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
+    tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, filter_prediction_grows_with_time);
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);

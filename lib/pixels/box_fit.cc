@@ -30,6 +30,11 @@ constexpr double kMinHeight = 0.8, kMaxHeight = 1.25;
 // A head found farther than kHeadSlack box heights from the box's top is
 // not this person's top (a group's, a blob in pieces): no move up or down.
 constexpr double kHeadSlack = 0.15;
+// Where the people's size speaks, a head-to-feet extent taller than
+// kOnePerson times a person's height at its feet's row holds another
+// person's head above or feet below (one behind, one in front, their
+// silhouettes joined): no move up or down.
+CT_TUNABLE(kOnePerson, "CTRACK_FIT_ONE_PERSON", 1.1);
 // With the people's size known: a box under kCut of the height a person
 // whose head is at its top has is cut (a coat the colour of the ground, an
 // occluder), and grows to the feet found below within kFeetReach of that
@@ -196,7 +201,10 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     if (sized.height != b.height)
         return true; // grown to the feet: its top is the head's already
     // The silhouette's head-to-feet extent, where it is the whole person's.
-    const bool extent = !cut_foot && head_near && tall >= kMinHeight * b.height &&
+    const double feet_y = (bottom + 1) * v.s;
+    const bool one_person = !(size && size->speaks_at(feet_y)) ||
+                            tall <= kOnePerson * size->height_at(feet_y);
+    const bool extent = !cut_foot && head_near && one_person && tall >= kMinHeight * b.height &&
                         tall <= kMaxHeight * b.height;
     const double mid = b.top + b.height / 2;
     const double cy = mid + (extent ? follow * ((top + bottom + 1) * v.s / 2 - mid) : 0);

@@ -22,7 +22,10 @@ constexpr double kFitFollow = 0.7;
 // person in it clearly (too little or too much foreground, no head or feet
 // on the body's axis). With the people's size known (`size`, or null) a
 // box cut short of a person's height (below the head it has at its top)
-// grows to the feet below, or to that height. A `detector`'s box (not the
+// grows to the feet below, or to that height; and a head-to-feet extent
+// more than a tenth taller than a person whose feet are at its bottom is
+// not one person's (a head behind or feet in front joined to it): the
+// box is not moved up or down by it. A `detector`'s box (not the
 // pixels' own, which is its blob's extent) much wider than the silhouette
 // is narrowed to it, and its height moves `follow` of the way to the
 // silhouette's head-to-feet extent where that is the whole person's; other
