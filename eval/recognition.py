@@ -583,7 +583,7 @@ it fills no more of its convex hull than a walking person does, its top
 is narrower than its body (0.7.0: a person has a head;
 docs/notes/pixels.md), and no shape a person is not (two walkers side by
 side) fits it better than every silhouette (0.9.0), unless it is no wider
-than 1.2 of a person's width at its bottom row where the people's size
+than 1.1 of a person's width at its bottom row where the people's size
 speaks (0.10.0: two walkers side by side are wider than one). The column
 "regions alone" leaves the shape tests out, the column "without the top's test"
 keeps the fill's alone; neither weighs the pairs, which need the blob's

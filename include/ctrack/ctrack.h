@@ -487,7 +487,7 @@ typedef struct ct_candidate {
      * fills more of its convex hull than a walking person does, see fill,
      * or its top is as wide as its body, see top_width, or two people side
      * by side fit its outline better than every pedestrian silhouette and,
-     * from the pixels, it is wider than 1.2 people where the people's size
+     * from the pixels, it is wider than 1.1 people where the people's size
      * is known; 0 for a blob at the image's left or right edge too narrow
      * to have an outline); candidates feed the tracker with this score. */
     float score;

@@ -25,7 +25,7 @@ constexpr int kEdgeMinWidth = 3;
 // that width counts the legs and arms of a stride, and the closest pair of
 // the library has its second walker 0.12 of a height over, a third of a
 // person's width (docs/tuning.md, "A pair no wider than one person").
-CT_TUNABLE(kPairMinWidth, "CTRACK_PAIR_MIN_WIDTH", 1.2);
+CT_TUNABLE(kPairMinWidth, "CTRACK_PAIR_MIN_WIDTH", 1.1);
 
 bool one_person_wide(const ct_candidate &c, const PersonSize &size)
 {
