@@ -14,7 +14,6 @@
 #include "pixels/background.h"
 #include "pixels/blobs.h"
 #include "pixels/camera_motion.h"
-#include "pixels/candidates.h"
 #include "template/classifier.h"
 #include "pixels/prime.h"
 
@@ -833,64 +832,6 @@ START_TEST(a_pair_is_no_pedestrian)
 }
 END_TEST
 
-// Two walkers 0.15 of a height apart (too close for a cut between their
-// heads) as a blob of the pixels, 84 x 160 frame pixels on a still
-// background: most regions vote yes, but a shape of two walkers fits it
-// better, and it is no pedestrian where the people's size says a person is
-// 64 pixels wide (the blob is 1.3 of that). Where it says 96, the blob is
-// no wider than one person and the regions' vote stands.
-START_TEST(a_pair_is_one_person_where_one_is_as_wide)
-{
-    constexpr int fw = 320, fh = 240, feet = 200, tall = 160, wide = 84;
-    Vec<uint8_t> y(fw * fh);
-    Planes img;
-    img.width = fw;
-    img.height = fh;
-    img.y = y.data();
-    img.y_stride = fw;
-    img.color = false;
-    auto pair_score = [&](double aspect) {
-        PersonSize size;
-        size.reset(fh);
-        for (int k = 0; k < 40; k++)
-            size.observe(feet - tall + (k % 3 - 1), tall, aspect * tall);
-        size.learn();
-        ck_assert(size.speaks_at(feet));
-        PixelCandidates pc;
-        Counters counters;
-        Vec<Track> tracks;
-        Vec<ct_candidate> out;
-        for (int k = 0; k < 30; k++) {
-            for (int r = 0; r < fh; r++)
-                for (int c = 0; c < fw; c++)
-                    y[(size_t)r * fw + c] = (uint8_t)(120 + (r * 7 + c * 13) % 5);
-            if (k == 29)
-                for (int r = 0; r < tall; r++)
-                    for (int c = 0; c < wide; c++) {
-                        const double x = c * 42.0 / wide, v = (r + 0.5) / tall;
-                        if ((x < 30 && walking_person((x + 0.25) / 30, v)) ||
-                            (x >= 12 && walking_person((x - 12 + 0.25) / 30, v)))
-                            y[(size_t)(feet - tall + r) * fw + 100 + c] = 30;
-                    }
-            pc.find(at(k), img, tracks, CT_PEDESTRIAN_TEMPLATE, size, counters, out);
-        }
-        ck_assert_int_eq((int)out.size(), 1);
-        ck_assert_int_ge(out[0].voters, kMinVoters);
-        ck_assert_msg(std::fabs(out[0].width - wide) <= 4 && std::fabs(out[0].height - tall) <= 4,
-                      "the blob is %.0f x %.0f", (double)out[0].width, (double)out[0].height);
-        return out[0];
-    };
-    const ct_candidate narrow = pair_score(0.4);
-    ck_assert_msg(narrow.score == 0.5f && 2 * narrow.votes_yes > narrow.voters,
-                  "among people 64 pixels wide: %d of %d regions yes, score %.2f",
-                  narrow.votes_yes, narrow.voters, (double)narrow.score);
-    const ct_candidate one = pair_score(0.6);
-    ck_assert_msg(one.score > 0.5f, "among people 96 pixels wide: score %.2f",
-                  (double)one.score);
-    ck_assert_int_eq(one.votes_yes, narrow.votes_yes);
-}
-END_TEST
-
 // How much of its convex hull a shape fills: all of a box; three quarters
 // of the box for an L (the left half of the top half and all of the bottom
 // half), whose hull leaves out one eighth of the box.
@@ -1299,7 +1240,6 @@ int main(int argc, char **argv)
     tcase_add_test(tc, pair_splits_between_heads);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, a_pair_is_no_pedestrian);
-    tcase_add_test(tc, a_pair_is_one_person_where_one_is_as_wide);
     tcase_add_test(tc, fill_of_the_convex_hull);
     tcase_add_test(tc, wide_topped_non_human_shapes_are_rejected);
     tcase_add_test(tc, hull_filling_non_human_shapes_are_rejected);

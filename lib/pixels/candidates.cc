@@ -19,19 +19,6 @@ constexpr double kGhostEdges = 2.0;
 // The narrowest blob at the image's left or right edge that is voted on, in
 // working pixels (docs/tuning.md, "A sliver at the edge").
 constexpr int kEdgeMinWidth = 3;
-// A blob that a shape of two walkers side by side fits better than every
-// silhouette is one person all the same when it is no wider than this many
-// of a person's widths at its bottom row, where the people's size speaks:
-// that width counts the legs and arms of a stride, and the closest pair of
-// the library has its second walker 0.12 of a height over, a third of a
-// person's width (docs/tuning.md, "A pair no wider than one person").
-CT_TUNABLE(kPairMinWidth, "CTRACK_PAIR_MIN_WIDTH", 1.1);
-
-bool one_person_wide(const ct_candidate &c, const PersonSize &size)
-{
-    const double bottom = c.top + c.height;
-    return size.speaks_at(bottom) && c.width <= kPairMinWidth * size.width_at(bottom);
-}
 
 // The working scale from the people's size (docs/notes/pixels.md, "The
 // working scale"): the coarsest of 1, 2 and 4 at which a typical person
@@ -166,13 +153,10 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
             background_.absorb(img, blobs_.cleaned(), r);
             continue;
         }
-        float alone;
         ct_candidate c = classifier_.candidate(
             blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
             (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s),
-            blobs_.headed_part(i), &alone);
-        if (alone >= 0 && one_person_wide(c, size))
-            c.score = alone;
+            blobs_.headed_part(i));
         if (test == CT_PEDESTRIAN_SIZE)
             c.score = person_sized(c, size) ? 1.0f : 0.0f;
         // A sliver at the image's left or right edge, fewer than
