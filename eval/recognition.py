@@ -582,7 +582,9 @@ blob is a pedestrian when more than half of the regions that vote say yes,
 it fills no more of its convex hull than a walking person does, its top
 is narrower than its body (0.7.0: a person has a head;
 docs/notes/pixels.md), and no shape a person is not (two walkers side by
-side) fits it better than every silhouette (0.9.0). The column "regions
+side) fits it better than every silhouette (0.9.0) unless its top edge
+shows one head (0.10.0: it is then a pedestrian scoring at most 0.75,
+which starts no track; docs/tuning.md, "Shapes a person is not"). The column "regions
 alone" leaves the shape tests out, the column "without the top's test"
 keeps the fill's alone; neither weighs the pairs, which need the blob's
 outline (the candidates' file holds its distances to the closest

@@ -486,9 +486,11 @@ typedef struct ct_candidate {
      * fewer than 5 voters; at most 0.5, not a pedestrian, when the blob
      * fills more of its convex hull than a walking person does, see fill,
      * or its top is as wide as its body, see top_width, or two people side
-     * by side fit its outline better than every pedestrian silhouette; 0
-     * for a blob at the image's left or right edge too narrow to have an
-     * outline); candidates feed the tracker with this score. */
+     * by side fit its outline better than every pedestrian silhouette and
+     * its top edge shows two heads or none; with one head, 0.5 plus half
+     * the regions' margin over 0.5, at most 0.75; 0 for a blob at the
+     * image's left or right edge too narrow to have an outline); candidates
+     * feed the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,

@@ -281,6 +281,13 @@ void BlobFinder::heads(const Rect &r, Vec<int> &out)
     std::sort(out.begin(), out.end());
 }
 
+int BlobFinder::head_count(const Rect &r)
+{
+    Vec<int> &hs = impl_->heads;
+    heads(r, hs);
+    return (int)hs.size();
+}
+
 bool BlobFinder::cut_between_heads(const Rect &r, const Vec<int> &hs, Classifier &cls,
                                    Vec<int> &cuts)
 {

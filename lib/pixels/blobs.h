@@ -43,6 +43,9 @@ public:
     // top edge: its neighbours' arms and legs fill its outline's hollows, so
     // its fill says nothing of its shape.
     bool headed_part(size_t i) const { return whole_[i] == kHeadedPart; }
+    // How many heads blob r shows on its top edge, as the split finds them
+    // (heads()).
+    int head_count(const Rect &r);
     bool flooded() const { return flooded_; }
     // Only the cleaning: the closing of the w x h mask.
     void clean(const uint8_t *mask, int w, int h);

@@ -280,6 +280,7 @@ Vote classify(const Shape &shape, const ClassifierParams &params)
         for (int s = kPeople; s < kSilhouettes; s++) {
             Vote v;
             if (!kRepeats.of_earlier[s] && compare(s, &v) < best_total) {
+                best.regions_alone = best.score;
                 best.score = 0.5f;
                 break;
             }
@@ -312,8 +313,11 @@ Vote Classifier::vote_part(const uint8_t *mask, int w, const Rect &r)
 }
 
 ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, float left,
-                                   float top, float width, float height, bool part)
+                                   float top, float width, float height, bool part,
+                                   float *regions_alone)
 {
+    if (regions_alone)
+        *regions_alone = -1;
     r.x0 = std::max(r.x0, 0);
     r.y0 = std::max(r.y0, 0);
     r.x1 = std::min(r.x1, w);
@@ -329,6 +333,8 @@ ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, fl
         return c; // outside the image: no voters
     }
     const Vote v = part ? vote_part(mask, w, r) : vote(mask, w, r);
+    if (regions_alone)
+        *regions_alone = v.regions_alone;
     c.score = v.score;
     c.votes_yes = v.yes;
     c.voters = v.voters;

@@ -72,6 +72,10 @@ struct Vote {
     int silhouette = -1;
     float fill = 0; // Profile::fill
     float top = 0;  // top_width()
+    // When a shape a person is not (two walkers side by side) overruled a
+    // majority of the regions, the score they gave (score is then 0.5);
+    // else -1.
+    float regions_alone = -1;
 };
 
 // How wide the blob's top is against its body: the median extent of the
@@ -108,9 +112,11 @@ public:
     Vote vote_part(const uint8_t *mask, int w, const Rect &r);
     // The vote inside r (clipped to the mask) as the candidate the API
     // reports, with the box (left, top, width, height) in frame pixels; a
-    // `part` as vote_part() has it.
+    // `part` as vote_part() has it. `regions_alone`, when given, receives
+    // Vote::regions_alone.
     ct_candidate candidate(const uint8_t *mask, int w, int h, Rect r, float left, float top,
-                           float width, float height, bool part = false);
+                           float width, float height, bool part = false,
+                           float *regions_alone = nullptr);
     size_t memory_bytes() const
     {
         return shape_.runs.memory_bytes() + shape_.columns.capacity() * sizeof(int) +
