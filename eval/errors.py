@@ -40,6 +40,7 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from cteval.data import DATA, sequences, seqinfo
+from cteval.peers import iou_matrix
 from loo import track
 
 # The still cameras of tests/data/README.md's table.
@@ -49,23 +50,14 @@ SINCE = [0, 0.5, 1, 2, 4, 1e9]
 MOTION = [0, 0.5, 1, 2, 1e9]
 
 
-def load(path, flag=None):
-    """{(frame, id): (left, top, width, height)} of a MOTChallenge file; with
-    flag, only the rows whose 7th column is (flag 1) or is not (flag 0) 0."""
-    rows = np.loadtxt(path, delimiter=",", ndmin=2)
-    if flag is not None:
-        rows = rows[(rows[:, 6] != 0) == bool(flag)]
+def boxes(rows):
+    """{(frame, id): (left, top, width, height)} of MOTChallenge rows."""
     return {(int(r[0]), int(r[1])): r[2:6] for r in rows}
 
 
 def iou(b, d):
     """IoU of box b against the boxes d (N, 4)."""
-    x1 = np.maximum(d[:, 0], b[0])
-    y1 = np.maximum(d[:, 1], b[1])
-    x2 = np.minimum(d[:, 0] + d[:, 2], b[0] + b[2])
-    y2 = np.minimum(d[:, 1] + d[:, 3], b[1] + b[3])
-    inter = np.clip(x2 - x1, 0, None) * np.clip(y2 - y1, 0, None)
-    return inter / (d[:, 2] * d[:, 3] + b[2] * b[3] - inter)
+    return iou_matrix(b[None], d)[0]
 
 
 def by_frame(boxes):
@@ -116,7 +108,7 @@ def detected(gt, dets):
     for k, rows in people.items():
         if k not in frames:
             continue
-        o = np.array([iou(b, frames[k]) for _, b in rows])
+        o = iou_matrix(np.array([b for _, b in rows]), frames[k])
         r, c = linear_sum_assignment(np.where(o >= 0.5, 1 - o, 2))
         out.update(rows[i][0] for i, j in zip(r, c) if o[i, j] >= 0.5)
     return out
@@ -132,12 +124,12 @@ def near_misses(ev, gt, hyp, dets):
         k, g = int(k), gt[(int(k), int(o))]
         if k not in hyps or k not in detections:
             continue
-        d = detections[k][iou(g, detections[k]).argmax()]
-        t = hyps[k][iou(g, hyps[k]).argmax()]
-        if iou(g, d[None])[0] < 0.5 or not 0.3 <= iou(g, t[None])[0] < 0.5:
+        on_d, on_t = iou(g, detections[k]), iou(g, hyps[k])
+        d, t = detections[k][on_d.argmax()], hyps[k][on_t.argmax()]
+        if on_d.max() < 0.5 or not 0.3 <= on_t.max() < 0.5:
             continue
         cx = g[0] + g[2] / 2
-        rows.append((iou(g, d[None])[0], iou(d, t[None])[0],
+        rows.append((on_d.max(), iou(d, t[None])[0],
                      abs(t[0] + t[2] / 2 - cx) / g[3], abs(d[0] + d[2] / 2 - cx) / g[3]))
     r = np.array(rows).reshape(-1, 4)
     if not len(r):
@@ -242,8 +234,10 @@ def main():
         out = os.path.join(tmp, seq + ".txt")
         acc = track(a.build, seq, a.param, out)
         fps = float(seqinfo(seq)["fps"])
-        gt = load(os.path.join(DATA, seq, "gt", "gt.txt"), flag=1)
-        hyp = load(out)
+        rows_gt = np.loadtxt(os.path.join(DATA, seq, "gt", "gt.txt"), delimiter=",", ndmin=2)
+        scored = rows_gt[:, 6] != 0  # the rows the scoring keeps
+        gt, ignored_gt = boxes(rows_gt[scored]), boxes(rows_gt[~scored])
+        hyp = boxes(np.loadtxt(out, delimiter=",", ndmin=2))
         dets = {(k, i): b for i, (k, b) in enumerate(
             (int(r[0]), r[2:6]) for r in np.loadtxt(
                 os.path.join(DATA, seq, "det", "det.txt"), delimiter=",", ndmin=2))}
@@ -251,8 +245,7 @@ def main():
         rows += [(seq,) + r for r in outcomes(acc, gt, hyp, fps, seq in STILL, found)]
         ev = acc.mot_events
         fp = {(int(k), int(h)) for (k, _), h in ev[ev.Type == "FP"].HId.items()}
-        on_ignored = overlapped({key: hyp[key] for key in fp},
-                                load(os.path.join(DATA, seq, "gt", "gt.txt"), flag=0))
+        on_ignored = overlapped({key: hyp[key] for key in fp}, ignored_gt)
         ignored.append((seq, len(fp), len(on_ignored)) + near_misses(ev, gt, hyp, dets)
                        + passes(ev, fps))
     print("Over the six sequences, detections only. Each cell a percentage and, in "
