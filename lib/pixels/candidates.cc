@@ -160,12 +160,11 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
             blobs_.headed_part(i), &regions);
         // A blob that a shape of two walkers fits better than every
         // silhouette, but that shows one head on its top edge, is one
-        // person far more often than two (57 of PETS09-S2L1's 67 are one
-        // person's whole blob): a pedestrian, the regions' margin over an
-        // even vote halved for the doubt. At most 0.75, under
+        // person far more often than two: a pedestrian, the regions' margin
+        // over an even vote halved for the doubt. At most 0.75, under
         // candidate_min_score's default: it continues a track and starts
         // none, as when the pair shapes turned it down (docs/tuning.md,
-        // "Shapes a person is not").
+        // "Shapes a person is not", has the blobs it lifts).
         if (regions > 0.5f && blobs_.head_count(r) == 1)
             c.score = 0.5f + 0.5f * (regions - 0.5f);
         if (test == CT_PEDESTRIAN_SIZE)
