@@ -250,6 +250,40 @@ START_TEST(crossing_people_keep_ids)
 }
 END_TEST
 
+/* A camera that jerks: at 10 frames/s a walker's box jumps 0.7 of its width
+ * for one step (the camera turned), beyond the plain IoU gate from where the
+ * track predicted it and from its last box. The gate widened by the
+ * prediction's uncertainty keeps the id, and the track goes on from there;
+ * two walkers a width and a half apart keep theirs through the same jerk. */
+START_TEST(a_jerking_camera_keeps_ids)
+{
+    for (int people = 1; people <= 2; people++) {
+        ct_tracker *t = test_tracker(NULL);
+        ct_track out[64];
+        uint64_t ids[2] = {0, 0};
+        float shift = 0;
+        for (int k = 0; k < 40; k++) {
+            if (k == 20)
+                shift = 28; /* 0.7 of a 40-pixel width */
+            ct_detection d[2] = {test_det(100 + 4.0f * k + shift, 100, 40, 100, 0.97f),
+                                 test_det(200 + 4.0f * k + shift, 104, 40, 100, 0.97f)};
+            size_t n = test_step(t, k * SEC / 10, d, (size_t)people, out);
+            ck_assert_uint_eq(n, (size_t)people);
+            for (size_t i = 0; i < n; i++) {
+                const int p = out[i].detection_index;
+                ck_assert(p >= 0 && p < people);
+                if (!ids[p])
+                    ids[p] = out[i].id;
+                ck_assert_uint_eq(out[i].id, ids[p]);
+            }
+        }
+        if (people == 2)
+            ck_assert_uint_ne(ids[0], ids[1]);
+        ct_tracker_destroy(t);
+    }
+}
+END_TEST
+
 /* Low-score detections only continue confirmed tracks; they never start one. */
 START_TEST(low_scores_continue_but_do_not_start)
 {
@@ -558,6 +592,7 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, lost_track_is_removed_and_ids_are_not_reused);
     tcase_add_test(tc, velocity_uses_time);
     tcase_add_test(tc, crossing_people_keep_ids);
+    tcase_add_test(tc, a_jerking_camera_keeps_ids);
     tcase_add_test(tc, a_new_track_reaches_as_far_as_its_person_walks);
     tcase_add_test(tc, low_scores_continue_but_do_not_start);
     tcase_add_test(tc, clipping_and_image_exit);

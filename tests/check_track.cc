@@ -122,6 +122,7 @@ START_TEST(gate_finds_every_overlap)
 {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> pos(0, 600), size(10, 120);
+    std::uniform_real_distribution<double> share(0, 0.5);
     for (int trial = 0; trial < 50; trial++) {
         Vec<ct_detection> dets;
         Vec<int> cols;
@@ -134,22 +135,81 @@ START_TEST(gate_finds_every_overlap)
         Gate g;
         g.index(dets.data(), cols);
         const Box box{pos(rng), pos(rng), 50, 120};
-        for (double min_iou : {0.05, 0.2, 0.5}) {
-            Vec<Pair> pairs;
-            g.overlapping(3, box, min_iou, pairs);
-            std::set<int> want, got;
-            for (size_t k = 0; k < cols.size(); k++)
-                if (iou(box, det_box(dets[(size_t)cols[k]])) >= min_iou)
-                    want.insert((int)k);
-            for (const Pair &p : pairs) {
-                ck_assert_int_eq(p.row, 3);
-                ck_assert_double_eq_tol(p.cost,
-                                        1 - iou(box, det_box(dets[(size_t)cols[(size_t)p.col]])),
-                                        1e-9);
-                got.insert(p.col);
+        // Plain, and with every box widened by a buffer (buffered_iou()).
+        for (double buffer : {0.0, share(rng)})
+            for (double min_iou : {0.05, 0.2, 0.5}) {
+                Vec<Pair> pairs;
+                g.overlapping(3, box, min_iou, pairs, 0, buffer);
+                std::set<int> want, got;
+                for (size_t k = 0; k < cols.size(); k++)
+                    if (buffered_iou(box, det_box(dets[(size_t)cols[k]]), buffer) >= min_iou)
+                        want.insert((int)k);
+                for (const Pair &p : pairs) {
+                    ck_assert_int_eq(p.row, 3);
+                    ck_assert_double_eq_tol(
+                        p.cost,
+                        1 - buffered_iou(box, det_box(dets[(size_t)cols[(size_t)p.col]]), buffer),
+                        1e-9);
+                    got.insert(p.col);
+                }
+                ck_assert(want.size() <= (size_t)kMaxPairsPerTrack);
+                ck_assert(want == got);
             }
-            ck_assert(want.size() <= (size_t)kMaxPairsPerTrack);
-            ck_assert(want == got);
+    }
+}
+END_TEST
+
+// Widened alike, two boxes of one size offset by 0.75 of their width
+// overlap as if offset by 0.75 / (1 + 2 buffer): half a width at a
+// quarter. A buffer of 0 is the plain IoU.
+START_TEST(buffered_iou_discounts_the_offset)
+{
+    const Box a{0, 0, 40, 100}, b{30, 0, 40, 100};
+    ck_assert_double_eq_tol(buffered_iou(a, b, 0.25), iou(a, Box{20, 0, 40, 100}), 1e-12);
+    ck_assert(iou(a, b) < 0.2 && buffered_iou(a, b, 0.25) > 0.2);
+    ck_assert_double_eq(buffered_iou(a, b, 0), iou(a, b));
+    // A size ratio counts as much as without the buffer.
+    const Box c{-10, -25, 60, 150};
+    ck_assert_double_eq_tol(buffered_iou(a, c, 0.3), iou(a, c), 1e-12);
+}
+END_TEST
+
+// A buffer reaches no neighbour: after separate_buffers(), each box widened
+// by its buffer stays clear of every other box widened by the same share,
+// or its buffer is 0 where the two already overlap; and it is the largest
+// such buffer up to the one asked (compared with every pair).
+START_TEST(separate_buffers_keeps_each_box_clear_of_its_neighbours)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> pos(0, 1000), size(20, 150);
+    std::uniform_real_distribution<double> share(0, 0.5);
+    for (int trial = 0; trial < 200; trial++) {
+        const int n = 1 + trial % 30;
+        Vec<Box> boxes;
+        Vec<double> buffers, asked;
+        Vec<int> order;
+        for (int k = 0; k < n; k++) {
+            const float h = size(rng);
+            boxes.push_back(Box{pos(rng), pos(rng) * 0.5f, h * 0.4f, h});
+            asked.push_back(share(rng));
+        }
+        buffers = asked;
+        separate_buffers(boxes, buffers, order);
+        for (int i = 0; i < n; i++) {
+            double want = asked[(size_t)i];
+            const Box &p = boxes[(size_t)i];
+            for (int j = 0; j < n; j++) {
+                if (j == i)
+                    continue;
+                const Box &q = boxes[(size_t)j];
+                const double gx = std::max(q.left - (p.left + p.width), p.left - (q.left + q.width));
+                const double gy = std::max(q.top - (p.top + p.height), p.top - (q.top + q.height));
+                want = std::min(want, std::max(0.0, std::max(gx / (p.width + q.width),
+                                                             gy / (p.height + q.height))));
+                ck_assert(buffered_iou(p, q, buffers[(size_t)i] * (1 - 1e-9)) == 0 ||
+                          (iou(p, q) > 0 && buffers[(size_t)i] == 0));
+            }
+            ck_assert_double_eq_tol(buffers[(size_t)i], want, 1e-12);
         }
     }
 }
@@ -558,6 +618,8 @@ int main(void)
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);
     tcase_add_test(tc, gate_finds_every_overlap);
+    tcase_add_test(tc, buffered_iou_discounts_the_offset);
+    tcase_add_test(tc, separate_buffers_keeps_each_box_clear_of_its_neighbours);
     tcase_add_test(tc, gate_bounds_a_flood);
     tcase_add_test(tc, gate_reach_pairs_a_person_who_walked_on);
     tcase_add_test(tc, size_gate_learns_the_line_and_sets_aside_what_is_off_it);

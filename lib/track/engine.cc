@@ -29,6 +29,17 @@ CT_TUNABLE(kNewTrackReach, "CTRACK_NEW_TRACK_REACH", 2.0);
 // came in slowly toward the camera and stands is not.
 CT_TUNABLE(kObjectAfterS, "CTRACK_OBJECT_AFTER", 1.0);
 CT_TUNABLE(kObjectReach, "CTRACK_OBJECT_REACH", 0.15);
+// Without the pixels, a confirmed or lost track meets the detections
+// through boxes widened by kBufferSd standard deviations of the centre it
+// predicts one step after a correction (Track::sd_after_hit), at most
+// kBufferMax of their sizes on each side, and never so far that it reaches
+// another track's box (separate_buffers()). Where the prediction is
+// uncertain (a few frames a second, a moving camera) a person moves further
+// than a plain IoU gate allows; a track coasting keeps its width, and in a
+// group each box stays clear of its neighbours' (docs/tuning.md, "The
+// association's buffer").
+CT_TUNABLE(kBufferSd, "CTRACK_BUFFER_SD", 4.0);
+CT_TUNABLE(kBufferMax, "CTRACK_BUFFER_MAX", 0.5);
 
 } // namespace
 
@@ -184,12 +195,27 @@ void Engine::start_track(const ct_detection &d, int index, int64_t t_us, bool co
     state_.tracks.push_back(t);
 }
 
+double Engine::buffer(const Track &t) const
+{
+    return std::min(kBufferMax, kBufferSd * t.sd_after_hit / std::max(t.h.x, kMinSide));
+}
+
 void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
-                   const ct_detection *dets, double min_iou)
+                   const ct_detection *dets, double min_iou, bool buffered)
 {
     const int n = (int)track_idx.size(), m = (int)det_idx.size();
     if (n == 0 || m == 0)
         return;
+    buffers_.assign((size_t)n, 0.0);
+    if (buffered) {
+        cues_.resize((size_t)n);
+        for (int i = 0; i < n; i++) {
+            const Track &t = state_.tracks[(size_t)track_idx[(size_t)i]];
+            cues_[(size_t)i] = t.cue;
+            buffers_[(size_t)i] = buffer(t);
+        }
+        separate_buffers(cues_, buffers_, buffer_order_);
+    }
     // Cost: 1 - IoU, plus appearance_weight (1 - DDIS) with appearance. A
     // pair is allowed only when its IoU reaches min_iou, whatever it looks
     // like, or for a tentative track when the detection is within its reach
@@ -203,7 +229,7 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
         const double reach = t.state == CT_TRACK_TENTATIVE
                                  ? kNewTrackReach * t.centre_innovation_sd(cfg_.detection_noise)
                                  : 0;
-        gate_.overlapping(i, t.cue, min_iou, pairs_, reach);
+        gate_.overlapping(i, t.cue, min_iou, pairs_, reach, buffers_[(size_t)i]);
     }
     if (w > 0)
         add_appearance(track_idx, det_idx, n, m, w);
@@ -471,17 +497,19 @@ void Engine::associate(const ct_detection *dets, bool pixels)
     const int64_t t_us = state_.last_us;
     // 1. High-score detections against confirmed and lost tracks (those
     //    lost for longer than lost_lifetime are gone, whatever lies where
-    //    they were).
+    //    they were); without mean shift to follow them, through boxes
+    //    widened by the prediction's uncertainty.
+    const bool predicted_only = cfg_.source == CT_SOURCE_DETECTIONS && !pixels;
     pool_tracks_.clear();
     for (size_t i = 0; i < tracks.size(); i++)
         if (tracks[i].state != CT_TRACK_TENTATIVE &&
             elapsed_s(t_us, tracks[i].last_update_us) <= cfg_.lost_lifetime)
             pool_tracks_.push_back((int)i);
-    match(pool_tracks_, pool_dets_, dets, cfg_.match_iou);
+    match(pool_tracks_, pool_dets_, dets, cfg_.match_iou, predicted_only);
     // 1b. Without mean shift to follow them, the tracks left try again
     //     from where their detection last was: a person who stopped, or a
     //     camera that jerked, leaves the prediction off.
-    if (cfg_.source == CT_SOURCE_DETECTIONS && !pixels)
+    if (predicted_only)
         recover(dets);
 
     // 2. Low-score detections continue tracks that were confirmed and not

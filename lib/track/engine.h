@@ -162,9 +162,15 @@ private:
     void reidentify(const ct_detection *dets);
     // Matches tracks[track_idx] to dets[det_idx] by IoU with the gate
     // min_iou (and appearance, when on), updates the matched tracks, and
-    // leaves only the unmatched in both lists.
+    // leaves only the unmatched in both lists. With `buffered`, the IoU of
+    // boxes widened by each track's uncertainty (buffer()).
     void match(Vec<int> &track_idx, Vec<int> &det_idx,
-               const ct_detection *dets, double min_iou);
+               const ct_detection *dets, double min_iou, bool buffered = false);
+    // How much a confirmed or lost track's box and a detection's are
+    // widened on each side, as a share of their sizes, when they are
+    // compared without the pixels (kBufferSd): the track's sd_after_hit in
+    // its heights.
+    double buffer(const Track &t) const;
     // The costs of match()'s pairs: 1 - IoU, plus appearance_weight (1 -
     // DDIS) where pairs compete.
     void add_appearance(const Vec<int> &track_idx, const Vec<int> &det_idx, int n, int m,
@@ -237,6 +243,9 @@ private:
     Gate gate_;
     Vec<Pair> pairs_;
     Vec<int> row_pairs_, col_pairs_; // pairs per row and column in match()
+    Vec<Box> cues_;                  // the buffered match()'s tracks' cues,
+    Vec<double> buffers_;            // their buffers
+    Vec<int> buffer_order_;          // and separate_buffers()' scratch
     Assigner assigner_;
     Vec<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     Vec<char> det_used_;

@@ -59,22 +59,24 @@ void Gate::keep_best(Vec<Pair> &out)
     out.insert(out.end(), row_.begin(), row_.end());
 }
 
-void Gate::overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out, double reach)
+void Gate::overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out, double reach,
+                       double buffer)
 {
     row_.clear();
     // A detection overlaps the box only if its left edge lies in
-    // (box.left - widest detection, box right edge); one near it, if its
-    // centre is within reach of the box's.
+    // (box.left - widest detection, box right edge), both widened by the
+    // buffer; one near it, if its centre is within reach of the box's.
     const double cx = box.left + box.width / 2, cy = box.top + box.height / 2;
     const bool reaching = reach > 0;
+    const double lo = box.left - buffer * box.width - (1 + buffer) * max_width_;
+    const double hi = box.left + box.width + buffer * (box.width + max_width_);
     size_t first, last;
-    range(reaching ? std::min(box.left, cx - reach - 1) - max_width_ : box.left - max_width_,
-          reaching ? std::max(box.left + box.width, cx + reach + 1) : box.left + box.width,
-          &first, &last);
+    range(reaching ? std::min(lo, cx - reach - 1 - max_width_) : lo,
+          reaching ? std::max(hi, cx + reach + 1) : hi, &first, &last);
     for (size_t i = first; i < last; i++) {
         const int k = order_[i];
         const ct_detection &d = dets_[(*cols_)[(size_t)k]];
-        const double o = iou(box, det_box(d));
+        const double o = buffered_iou(box, det_box(d), buffer);
         if (o + 1e-12 >= min_iou) {
             row_.push_back(Pair{row, k, 1.0 - o});
             continue;

@@ -33,9 +33,11 @@ public:
     // 0, also the detections that miss min_iou but whose centre lies within
     // `reach` of the box's, at a height within (0.67, 1.5) times the box's,
     // at a cost from (1 - min_iou) / 2 to 1 - min_iou as they lie farther:
-    // a new track's person may have walked out of their last box.
+    // a new track's person may have walked out of their last box. With
+    // buffer > 0 the IoU is that of the two boxes each widened by `buffer`
+    // of its own width and height on every side (buffered_iou()).
     void overlapping(int row, const Box &box, double min_iou, Vec<Pair> &out,
-                     double reach = 0);
+                     double reach = 0, double buffer = 0);
     // Appends (row, k, distance) for the indexed detections whose centre
     // lies within `reach` of (cx, cy) and whose height is within (0.67, 1.5)
     // times h, the kMaxPairsPerTrack nearest when more do (ties: the lower

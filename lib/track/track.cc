@@ -41,6 +41,61 @@ double iou(const Box &a, const Box &b)
     return uni > 0 ? inter / uni : 0;
 }
 
+double buffered_iou(const Box &a, const Box &b, double buffer)
+{
+    if (buffer <= 0)
+        return iou(a, b);
+    const double g = 1 + 2 * buffer;
+    return iou(Box{a.left - buffer * a.width, a.top - buffer * a.height, a.width * g,
+                   a.height * g},
+               Box{b.left - buffer * b.width, b.top - buffer * b.height, b.width * g,
+                   b.height * g});
+}
+
+void separate_buffers(const Vec<Box> &boxes, Vec<double> &buffers, Vec<int> &order)
+{
+    const size_t n = boxes.size();
+    order.resize(n);
+    double max_w = 0;
+    for (size_t k = 0; k < n; k++) {
+        order[k] = (int)k;
+        max_w = std::max(max_w, boxes[k].width);
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return boxes[(size_t)a].left != boxes[(size_t)b].left
+                   ? boxes[(size_t)a].left < boxes[(size_t)b].left
+                   : a < b;
+    });
+    // Widened by b, boxes p and q meet once their gap on both axes is under
+    // b times their summed sizes on that axis. Only a box whose left edge
+    // lies within b (p.width + max_w) of p's extent (past the widest box on
+    // the left) can lower p's buffer.
+    for (size_t a = 0; a < n; a++) {
+        const size_t i = (size_t)order[a];
+        const Box &p = boxes[i];
+        double &b = buffers[i];
+        auto meet = [&](const Box &q) {
+            const double gx =
+                std::max(q.left - (p.left + p.width), p.left - (q.left + q.width));
+            const double gy = std::max(q.top - (p.top + p.height), p.top - (q.top + q.height));
+            b = std::min(b, std::max(0.0, std::max(gx / (p.width + q.width),
+                                                   gy / (p.height + q.height))));
+        };
+        for (size_t c = a; c-- > 0 && b > 0;) {
+            const Box &q = boxes[(size_t)order[c]];
+            if (q.left + max_w + b * (p.width + max_w) < p.left)
+                break;
+            meet(q);
+        }
+        for (size_t c = a + 1; c < n && b > 0; c++) {
+            const Box &q = boxes[(size_t)order[c]];
+            if (q.left > p.left + p.width + b * (p.width + max_w))
+                break;
+            meet(q);
+        }
+    }
+}
+
 double inside_fraction(const Box &b, int w, int h)
 {
     double iw = std::min<double>(w, b.left + b.width) - std::max(0.0, b.left);
@@ -117,7 +172,10 @@ double Track::from_start(const Box &b) const
 
 void Track::predict(double dt, double motion_noise, double shown_noise)
 {
+    const bool corrected = det_index >= 0;
     BoxMotion::predict(dt, motion_noise);
+    if (corrected)
+        sd_after_hit = std::sqrt(std::max(cx.p00, cy.p00));
     shown.predict(dt, shown_noise);
     age++;
     det_index = -1;

@@ -19,6 +19,15 @@ struct Box {
 };
 
 double iou(const Box &a, const Box &b);
+// The IoU of a and b each widened by `buffer` of its own width and height
+// on every side (Yang et al.'s buffered IoU, WACV 2023): an offset between
+// the centres counts 1 + 2 buffer times less against the boxes' sizes, a
+// ratio of sizes as much as in iou().
+double buffered_iou(const Box &a, const Box &b, double buffer);
+// Lowers each buffers[k] so that boxes[k], widened by it as in
+// buffered_iou(), reaches no other box widened by the same share; for two
+// boxes that already overlap, to 0. order is scratch.
+void separate_buffers(const Vec<Box> &boxes, Vec<double> &buffers, Vec<int> &order);
 
 inline Box det_box(const ct_detection &d)
 {
@@ -92,6 +101,11 @@ struct Track : BoxMotion {
     // The box association compares with detections this step: the
     // prediction, or where mean shift moved it.
     Box cue{0, 0, 0, 0};
+    // The centre's standard deviation (the less certain axis) one step
+    // after the track's last correction: how far its person may stray from
+    // the prediction while the track keeps up with them. Not grown while
+    // the track coasts (Engine::buffer()).
+    double sd_after_hit = 0;
     // This step's mean shift result, when it ran (rho in Q16).
     bool followed = false;
     MeanShiftResult ms;
@@ -108,7 +122,8 @@ struct Track : BoxMotion {
     void start(const ct_detection &d, double detection_noise, int index, int64_t t_us);
     // Predicts dt seconds ahead (acceleration noise motion_noise box heights
     // per second squared; shown_noise for the reported box's model) and
-    // forgets the last step's match and mean shift.
+    // forgets the last step's match and mean shift; after a correction,
+    // sets sd_after_hit.
     void predict(double dt, double motion_noise, double shown_noise);
     // The centre's normalized innovation squared for detection d (the mean
     // of both axes), before correct().
