@@ -651,8 +651,10 @@ size_t Engine::memory_bytes() const
                  e->candidates.capacity() * sizeof(ct_candidate);
     return sizeof(*this) + state + pairs_.capacity() * sizeof(Pair) + gate_.memory_bytes() +
            (row_to_col_.capacity() + pool_tracks_.capacity() + pool_dets_.capacity() +
-            low_dets_.capacity() + row_pairs_.capacity() + col_pairs_.capacity()) *
+            low_dets_.capacity() + row_pairs_.capacity() + col_pairs_.capacity() +
+            buffer_order_.capacity()) *
                sizeof(int) +
+           cues_.capacity() * sizeof(Box) + buffers_.capacity() * sizeof(double) +
            det_used_.capacity() + assigner_.memory_bytes() + ms_.memory_bytes() +
            bank_.memory_bytes() + pixels_.memory_bytes() + count_.memory_bytes();
 }
