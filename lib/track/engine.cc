@@ -206,9 +206,9 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
     const int n = (int)track_idx.size(), m = (int)det_idx.size();
     if (n == 0 || m == 0)
         return;
-    buffers_.assign((size_t)n, 0.0);
     if (buffered) {
         cues_.resize((size_t)n);
+        buffers_.resize((size_t)n);
         for (int i = 0; i < n; i++) {
             const Track &t = state_.tracks[(size_t)track_idx[(size_t)i]];
             cues_[(size_t)i] = t.cue;
@@ -229,7 +229,8 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
         const double reach = t.state == CT_TRACK_TENTATIVE
                                  ? kNewTrackReach * t.centre_innovation_sd(cfg_.detection_noise)
                                  : 0;
-        gate_.overlapping(i, t.cue, min_iou, pairs_, reach, buffers_[(size_t)i]);
+        gate_.overlapping(i, t.cue, min_iou, pairs_, reach,
+                          buffered ? buffers_[(size_t)i] : 0.0);
     }
     if (w > 0)
         add_appearance(track_idx, det_idx, n, m, w);
