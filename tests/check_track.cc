@@ -17,6 +17,7 @@
 #include "track/motion.h"
 #include "track/person_size.h"
 #include "track/scene.h"
+#include "track/score_noise.h"
 #include "track/score_scale.h"
 #include "track/size_gate.h"
 #include "track/track.h"
@@ -359,6 +360,56 @@ START_TEST(score_scale_keeps_learning)
 }
 END_TEST
 
+// A detector whose boxes scoring 0.6 stray twice as far as those scoring
+// 0.97 (their squared innovations 4 times larger): the factors on their
+// noise differ twice over, whatever the scale of the scores; a score never
+// seen keeps the mean's, 1.
+static void feed_two_scores(ScoreNoise &s, float sure, float unsure, int n)
+{
+    std::mt19937 rng(7);
+    std::exponential_distribution<double> e(1.0);
+    for (int k = 0; k < n; k++) {
+        s.observe(sure, 0.001 * e(rng));
+        s.observe(unsure, 0.004 * e(rng));
+    }
+}
+
+START_TEST(score_noise_learns_how_far_each_score_strays)
+{
+    ScoreNoise s;
+    ck_assert_double_eq(s.factor(0.3f), 1.0); // nothing seen: as configured
+    feed_two_scores(s, 0.97f, 0.6f, 20); // 40 < kMinSamples
+    ck_assert_double_eq(s.factor(0.6f), 1.0);
+    feed_two_scores(s, 0.97f, 0.6f, 2000);
+    ck_assert_double_eq_tol(s.factor(0.6f) / s.factor(0.97f), 2.0, 0.15);
+    ck_assert(s.factor(0.97f) < 1 && s.factor(0.6f) > 1);
+    ck_assert_double_eq_tol(s.factor(0.3f), 1.0, 1e-12);
+    // The same detector on another scale (its scores squared).
+    ScoreNoise squared;
+    feed_two_scores(squared, 0.97f * 0.97f, 0.6f * 0.6f, 2022);
+    ck_assert_double_eq_tol(squared.factor(0.36f) / squared.factor(0.94f), 2.0, 0.15);
+    // What is not a squared innovation is ignored; scores off the scale
+    // count at its ends.
+    const double before = s.factor(0.6f);
+    s.observe(0.6f, NAN);
+    s.observe(0.6f, INFINITY);
+    s.observe(0.6f, -1);
+    ck_assert_double_eq(s.factor(0.6f), before);
+    s.observe(NAN, 0.002);
+    s.observe(7, 0.002);
+    ck_assert(std::isfinite(s.factor(NAN)) && std::isfinite(s.factor(7)));
+    // Bounded: a few boxes far worse than the many (a root of 4.5 times
+    // the mean), and those many far better (0.23 times).
+    s.reset();
+    for (int k = 0; k < 1000; k++)
+        s.observe(0.97f, 1e-3);
+    for (int k = 0; k < 30; k++)
+        s.observe(0.5f, 1.0);
+    ck_assert_double_eq(s.factor(0.5f), ScoreNoise::kMaxFactor);
+    ck_assert_double_eq(s.factor(0.97f), ScoreNoise::kMinFactor);
+}
+END_TEST
+
 // ---------------------------------------------------------------------------
 // The people's size (person_size.h).
 
@@ -626,6 +677,7 @@ int main(void)
     tcase_add_test(tc, size_gate_forgets_in_time);
     tcase_add_test(tc, score_scale_bounds_confirmation_by_the_detector_best_boxes);
     tcase_add_test(tc, score_scale_keeps_learning);
+    tcase_add_test(tc, score_noise_learns_how_far_each_score_strays);
     tcase_add_test(tc, person_size_fits_the_ground_line);
     tcase_add_test(tc, person_size_never_slopes_the_wrong_way);
     tcase_add_test(tc, scene_motion_follows_the_innovations_in_time);

@@ -150,6 +150,8 @@ typedef struct ct_config {
      * Default 0.5; range (0, 100]. */
     float motion_noise;
     /* Standard deviation of a detection's position error, in box heights.
+     * Without frames, each detection's is this times a factor its score
+     * earned, learnt as the tracker runs (docs/API.md, "Each step").
      * Default 0.05; range (0, 10]. */
     float detection_noise;
     /* Non-zero: reported boxes are clipped to the image when its size is

@@ -40,6 +40,9 @@ CT_TUNABLE(kObjectReach, "CTRACK_OBJECT_REACH", 0.15);
 // association's buffer").
 CT_TUNABLE(kBufferSd, "CTRACK_BUFFER_SD", 4.0);
 CT_TUNABLE(kBufferMax, "CTRACK_BUFFER_MAX", 0.5);
+// Whether a detector's boxes are trusted by their scores as the tracker
+// learns them (score_noise.h); 0 only in a tuning build's sweeps.
+CT_TUNABLE(kScoreNoise, "CTRACK_SCORE_NOISE", 1.0);
 
 } // namespace
 
@@ -173,8 +176,12 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
         t.shown_nx = nx;
         t.shown_ny = ny;
         t.shown_age = t.age;
+        if (by_score_)
+            state_.learnt.score_noise.observe(d.score, t.centre_innovation2(d));
     }
-    t.correct(d, cfg_.detection_noise, shown_noise, index, t_us);
+    // A detector's box is trusted as much as its score's boxes earned.
+    const double f = by_score_ ? state_.learnt.score_noise.factor(d.score) : 1.0;
+    t.correct(d, cfg_.detection_noise * f, shown_noise * f, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
     else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&
@@ -561,6 +568,10 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
 {
     const bool pixels = cfg_.mean_shift && !img.empty();
     appearance_ = cfg_.appearance && !img.empty();
+    // With frames, the pixels (mean shift, DDIS) decide the crossings, and
+    // a detector's boxes are trusted alike (docs/tuning.md, "A detection's
+    // noise by its score").
+    by_score_ = cfg_.source == CT_SOURCE_DETECTIONS && img.empty() && kScoreNoise > 0;
     const StepTime time = advance_clock(t_us);
     uint64_t *const ns = state_.counters.stage_ns;
 

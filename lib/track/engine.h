@@ -20,6 +20,7 @@
 #include "base/planes.h"
 #include "track/person_size.h"
 #include "track/scene.h"
+#include "track/score_noise.h"
 #include "track/score_scale.h"
 #include "track/size_gate.h"
 #include "appearance/templates.h"
@@ -49,6 +50,7 @@ struct SceneModels {
     PersonSize size;
     SizeGate size_gate; // a detector's people's height (size_gate)
     ScoreScale scores;  // a detector's scale of scores (confirm_score)
+    ScoreNoise score_noise; // how far a detector's boxes stray by score
     FitBias fit_bias;   // what the fit does to a detector's boxes (refine_boxes)
 };
 
@@ -250,6 +252,9 @@ private:
     Vec<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     Vec<char> det_used_;
     Vec<Box> fitted_; // fit_reported()'s
+    // Whether this step's detections are trusted by their scores
+    // (score_noise.h): a detector's boxes without frames.
+    bool by_score_ = false;
 };
 
 } // namespace ctrack

@@ -190,6 +190,14 @@ double Track::centre_nis(const ct_detection &d, double detection_noise) const
     return 0.5 * (cx.nis(d.left + d.width / 2.0, sd) + cy.nis(d.top + d.height / 2.0, sd));
 }
 
+double Track::centre_innovation2(const ct_detection &d) const
+{
+    const double h = std::max(this->h.x, kMinSide);
+    const double ex = (d.left + d.width / 2.0 - cx.x) / h;
+    const double ey = (d.top + d.height / 2.0 - cy.x) / h;
+    return 0.5 * (ex * ex + ey * ey);
+}
+
 double Track::centre_innovation_sd(double detection_noise) const
 {
     const double sd = detection_noise * std::max(h.x, kMinSide);

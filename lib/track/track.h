@@ -128,6 +128,9 @@ struct Track : BoxMotion {
     // The centre's normalized innovation squared for detection d (the mean
     // of both axes), before correct().
     double centre_nis(const ct_detection &d, double detection_noise) const;
+    // Detection d's centre's squared innovation in the track's heights
+    // squared (the mean of both axes), before correct().
+    double centre_innovation2(const ct_detection &d) const;
     // The standard deviation of a detection's centre about the prediction
     // on the less certain axis (a detection's noise at the track's height).
     double centre_innovation_sd(double detection_noise) const;
