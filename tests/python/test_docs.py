@@ -1,7 +1,7 @@
 """The tree's references hold: a page named with a heading ("docs/tuning.md,
 "Size gate"") has that heading, a path named in a doc or a comment exists,
 and nothing points outside the repository (a user's checkout has only the
-tree)."""
+tree). The README's tables of scores are make eval's."""
 import os
 import re
 import subprocess
@@ -93,3 +93,55 @@ def test_the_method_is_described_and_linked():
         assert room in algorithm, room
     assert "docs/algorithm.md" in text("README.md")
     assert "algorithm.md" in text("docs/README.md")
+
+
+def _cells(line):
+    return [c.strip() for c in line.strip().strip("|").split("|")]
+
+
+def _plain(cell):
+    """A table cell without bold marks."""
+    return cell.replace("*", "").strip()
+
+
+def _tracker(name):
+    """A tracker's name without its version ("SORT (trackers 2.6.1)" ->
+    "SORT (trackers)"), as the README names it."""
+    name = re.sub(r"\s+\d+(\.\d+)+", "", _plain(name))
+    return re.sub(r"\s+", " ", name).strip()
+
+
+def _section_rows(md, heading):
+    """The table rows (cells) under the first heading that starts so."""
+    at = md.index("\n## " + heading)
+    end = md.find("\n## ", at + 1)
+    body = md[at:end if end >= 0 else len(md)]
+    return [_cells(l) for l in body.splitlines()
+            if l.startswith("|") and not l.startswith("|---")]
+
+
+def test_readme_tables_are_make_evals():
+    """The README's tables of scores are docs/results.md's (make eval
+    writes the one; the other is kept by hand and must follow)."""
+    results, readme = text("docs/results.md"), text("README.md")
+    # Over the six: HOTA, MOTA, IDF1, ID switches, precision, recall.
+    over = {_tracker(r[0]): r[1:7] for r in _section_rows(results, "Over all")[1:]}
+    block = readme[readme.index("| tracker | HOTA | MOTA | IDF1 | ID switches |"):]
+    rows = [_cells(l) for l in block.split("\n\n")[0].splitlines()[2:]]
+    assert len(rows) == len(over)
+    for r in rows:
+        assert [_plain(c) for c in r[1:7]] == over[_tracker(r[0])], r[0]
+    # Sequence by sequence, MOTA / IDF1 from detections.
+    block = readme[readme.index("| sequence | ctrack | ByteTrack |"):]
+    lines = block.split("\n\n")[0].splitlines()
+    names = [_tracker(c) for c in _cells(lines[0])[1:]]
+    for line in lines[2:]:
+        r = _cells(line)
+        seq = r[0]
+        got = {}
+        for row in _section_rows(results, seq + " (")[1:]:
+            if row[1] == "detections":
+                got.setdefault(_tracker(row[0]).split(" (")[0], "%s / %s" % (row[4], row[5]))
+        for name, cell in zip(names, r[1:]):
+            want = got[name if name == "ctrack" else next(k for k in got if k.startswith(name))]
+            assert _plain(cell) == want, (seq, name)
