@@ -7,8 +7,8 @@
 // curve of the score would fit one detector's scale. So each detection's
 // noise is detection_noise times the factor its score's boxes earned:
 // the root of the mean squared centre innovation of the confirmed tracks'
-// detections in its twentieth of the score range over that of all of
-// them (docs/tuning.md, "A detection's noise by its score").
+// detections whose scores fall in its twentieth of [0, 1] over that of all
+// of them (docs/tuning.md, "A detection's noise by its score").
 #ifndef CTRACK_SCORE_NOISE_H
 #define CTRACK_SCORE_NOISE_H
 
