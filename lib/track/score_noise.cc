@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/tunable.h"
+#include "track/score_scale.h"
 
 namespace ctrack {
 
@@ -23,17 +24,11 @@ void ScoreNoise::reset()
     *this = ScoreNoise();
 }
 
-int ScoreNoise::bin(float score)
-{
-    // Scores outside [0, 1] (or NaN) count at its ends.
-    return score >= 1.0f ? kBins - 1 : score > 0.0f ? (int)(score * kBins) : 0;
-}
-
 void ScoreNoise::observe(float score, double innovation2)
 {
     if (!std::isfinite(innovation2) || innovation2 < 0)
         return;
-    const int b = bin(score);
+    const int b = score_bin(score, kBins);
     sum_[b] += innovation2;
     count_[b] += 1;
     sum_all_ += innovation2;
@@ -53,7 +48,7 @@ double ScoreNoise::factor(float score) const
     if (count_all_ < kMinSamples || !(sum_all_ > 0))
         return 1.0;
     const double all = sum_all_ / count_all_;
-    const int b = bin(score);
+    const int b = score_bin(score, kBins);
     const double mine = (sum_[b] + kPrior * all) / (count_[b] + kPrior);
     return std::min(kMaxFactor, std::max(kMinFactor, std::sqrt(mine / all)));
 }

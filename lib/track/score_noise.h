@@ -33,8 +33,7 @@ public:
     static constexpr double kMinFactor = 0.5, kMaxFactor = 3;
 
 private:
-    static constexpr int kBins = 20; // scores in [0, 1] by twentieths
-    static int bin(float score);
+    static constexpr int kBins = 20; // scores in [0, 1] by twentieths (score_bin())
     double sum_[kBins] = {};
     double count_[kBins] = {};
     double sum_all_ = 0, count_all_ = 0;

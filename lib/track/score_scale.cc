@@ -25,9 +25,7 @@ void ScoreScale::reset()
 
 void ScoreScale::observe(float score)
 {
-    // Scores outside [0, 1] (or NaN) count at its ends.
-    int b = score >= 1.0f ? kBins - 1 : score > 0.0f ? (int)(score * kBins) : 0;
-    count_[b]++;
+    count_[score_bin(score, kBins)]++;
     if (++total_ >= kMaxTotal) {
         total_ = 0;
         for (uint32_t &c : count_) {

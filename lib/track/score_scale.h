@@ -16,6 +16,13 @@
 
 namespace ctrack {
 
+// Score's bin of `bins` equal ones over [0, 1]; scores outside it (or NaN)
+// count at its ends.
+inline int score_bin(float score, int bins)
+{
+    return score >= 1.0f ? bins - 1 : score > 0.0f ? (int)(score * bins) : 0;
+}
+
 class ScoreScale {
 public:
     // Forgets what it learnt.
