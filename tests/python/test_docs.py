@@ -120,28 +120,32 @@ def _section_rows(md, heading):
             if l.startswith("|") and not l.startswith("|---")]
 
 
+def _readme_table(readme, header):
+    """The rows (cells) of the README's table whose header line starts so."""
+    block = readme[readme.index(header):].split("\n\n")[0].splitlines()
+    return [_cells(l) for l in block if not l.startswith("|---")]
+
+
 def test_readme_tables_are_make_evals():
     """The README's tables of scores are docs/results.md's (make eval
     writes the one; the other is kept by hand and must follow)."""
     results, readme = text("docs/results.md"), text("README.md")
     # Over the six: HOTA, MOTA, IDF1, ID switches, precision, recall.
     over = {_tracker(r[0]): r[1:7] for r in _section_rows(results, "Over all")[1:]}
-    block = readme[readme.index("| tracker | HOTA | MOTA | IDF1 | ID switches |"):]
-    rows = [_cells(l) for l in block.split("\n\n")[0].splitlines()[2:]]
+    rows = _readme_table(readme, "| tracker | HOTA | MOTA | IDF1 | ID switches |")[1:]
     assert len(rows) == len(over)
     for r in rows:
         assert [_plain(c) for c in r[1:7]] == over[_tracker(r[0])], r[0]
     # Sequence by sequence, MOTA / IDF1 from detections.
-    block = readme[readme.index("| sequence | ctrack | ByteTrack |"):]
-    lines = block.split("\n\n")[0].splitlines()
-    names = [_tracker(c) for c in _cells(lines[0])[1:]]
-    for line in lines[2:]:
-        r = _cells(line)
+    table = _readme_table(readme, "| sequence | ctrack | ByteTrack |")
+    names = [_tracker(c) for c in table[0][1:]]
+    for r in table[1:]:
         seq = r[0]
+        # Each tracker's first row from detections, by its name before any
+        # bracket ("SORT (trackers)" -> "SORT"), as the README's header.
         got = {}
         for row in _section_rows(results, seq + " (")[1:]:
             if row[1] == "detections":
                 got.setdefault(_tracker(row[0]).split(" (")[0], "%s / %s" % (row[4], row[5]))
         for name, cell in zip(names, r[1:]):
-            want = got[name if name == "ctrack" else next(k for k in got if k.startswith(name))]
-            assert _plain(cell) == want, (seq, name)
+            assert _plain(cell) == got[name], (seq, name)
