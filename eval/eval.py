@@ -488,7 +488,7 @@ def write_report(out, results, seqs, worst, lower, overall, conditions, families
         counting.write_report(f, counts)
         write_conditions(f, results, conditions)
         write_families(f, families)
-        write_detector_family(f, detector_family, seqs)
+        write_detector_family(f, detector_family)
         f.write(LOWER_RATES_HEAD)
         f.write("![scores against the frame rate](img/rates.png)\n\n")
         f.write("| sequence | tracker | input | MOTA: mean (range) | IDF1: mean (range) "
@@ -541,46 +541,66 @@ DETECTOR_FAMILY_RUNS = [("ctrack-det", "ctrack"), ("sort", "SORT (trackers 2.6.1
                         ("bytetrack", "ByteTrack (supervision 0.30.9)")]
 
 
-def other_detectors(build, seqs, tmp):
-    """Every sequence's detections as other detectors would give them
-    (cteval.detectors), ctrack from the detections and two peers on each.
-    Returns one result a sequence, variant and tracker."""
-    results = []
+# Detectors of another kind, where the sequence has frames to run them on
+# (eval/hog_detections.py): the member's name and its file in det/.
+OTHER_KINDS = [("OpenCV's HOG people detector", "hog.txt"),
+               ("the same, its low scores too (SVM margin from -0.5)", "hog-low.txt")]
+
+
+def detector_members(seqs, tmp):
+    """(member, sequence, detections) for every member of the detector
+    family: the public detections' variants on every sequence, then the
+    detectors of another kind where their files are."""
     for name, how, seed in detectors.VARIANTS:
         for seq in seqs:
-            info = seqinfo(seq)
-            det = detectors.variant_path(seq, name, how, seed, tmp)
-            gt = os.path.join(DATA, seq, "gt", "gt.txt")
-            print("eval: %s, %s" % (seq, name), file=sys.stderr, flush=True)
-            for key, label in DETECTOR_FAMILY_RUNS:
-                path = os.path.join(tmp, "detfam-%s-%s.txt" % (key, seq))
-                if key in CTRACK_RUNS:
-                    run_ctrack(build, seq, info, None, path, pixels=False, det=det)
-                else:
-                    rows, _ = PEERS_ON_DETECTIONS[key](load_dets(seq, det), info["frames"],
-                                                       info["fps"])
-                    write_rows(path, rows)
-                r = score(gt, path)
-                r.update({"sequence": seq, "variant": name, "key": key, "tracker": label})
-                results.append(r)
+            yield name, seq, detectors.variant_path(seq, name, how, seed, tmp)
+    for name, fname in OTHER_KINDS:
+        for seq in seqs:
+            det = os.path.join(DATA, seq, "det", fname)
+            if os.path.exists(det):
+                yield name, seq, det
+
+
+def other_detectors(build, seqs, tmp):
+    """Every sequence's detections as other detectors would give them
+    (cteval.detectors), and other detectors' own (OTHER_KINDS), ctrack from
+    the detections and two peers on each. Returns one result a sequence,
+    member and tracker."""
+    results = []
+    for name, seq, det in detector_members(seqs, tmp):
+        info = seqinfo(seq)
+        gt = os.path.join(DATA, seq, "gt", "gt.txt")
+        print("eval: %s, %s" % (seq, name), file=sys.stderr, flush=True)
+        for key, label in DETECTOR_FAMILY_RUNS:
+            path = os.path.join(tmp, "detfam-%s-%s.txt" % (key, seq))
+            if key in CTRACK_RUNS:
+                run_ctrack(build, seq, info, None, path, pixels=False, det=det)
+            else:
+                rows, _ = PEERS_ON_DETECTIONS[key](load_dets(seq, det), info["frames"],
+                                                   info["fps"])
+                write_rows(path, rows)
+            r = score(gt, path)
+            r.update({"sequence": seq, "variant": name, "key": key, "tracker": label})
+            results.append(r)
     return results
 
 
-def write_detector_family(f, results, seqs):
+def write_detector_family(f, results):
     """The detector family's table: each variant's MOTA / IDF1 per sequence
     and tracker, and how often ctrack's MOTA is above both peers'."""
     f.write(DETECTOR_FAMILY_HEAD)
     above = total = 0
     f.write("| detections | sequence | %s |\n" % " | ".join(l for _, l in DETECTOR_FAMILY_RUNS))
     f.write("|---|---|%s\n" % ("---|" * len(DETECTOR_FAMILY_RUNS)))
-    for name, _, _ in detectors.VARIANTS:
-        for seq in seqs:
-            rs = {r["key"]: r for r in results if r["variant"] == name and r["sequence"] == seq}
-            f.write("| %s | %s | %s |\n" % (name if seq == seqs[0] else "", seq, " | ".join(
-                "%.1f / %.1f" % (rs[k]["MOTA"], rs[k]["IDF1"]) for k, _ in DETECTOR_FAMILY_RUNS)))
-            total += 1
-            above += rs["ctrack-det"]["MOTA"] > max(rs[k]["MOTA"]
-                                                    for k, _ in DETECTOR_FAMILY_RUNS[1:])
+    last = None
+    # Each member's rows in the order they ran, its name on its first.
+    for name, seq in dict.fromkeys((r["variant"], r["sequence"]) for r in results):
+        rs = {r["key"]: r for r in results if r["variant"] == name and r["sequence"] == seq}
+        f.write("| %s | %s | %s |\n" % (name if name != last else "", seq, " | ".join(
+            "%.1f / %.1f" % (rs[k]["MOTA"], rs[k]["IDF1"]) for k, _ in DETECTOR_FAMILY_RUNS)))
+        last = name
+        total += 1
+        above += rs["ctrack-det"]["MOTA"] > max(rs[k]["MOTA"] for k, _ in DETECTOR_FAMILY_RUNS[1:])
     f.write("\nctrack's MOTA is above SORT's and ByteTrack's on %d of the %d.\n\n"
             % (above, total))
 
@@ -592,8 +612,12 @@ sequence's public detections are also given as other detectors would give
 them (`eval/cteval/detectors.py`): scores on another scale (times 0.8, and
 squared), a detector that misses more (20% of the boxes dropped at random,
 three seeds), and a looser one (each box edge moved at random by up to 5%
-of the box's height). ctrack runs with the same defaults on each. Each cell
-is MOTA / IDF1, detections only.
+of the box's height). The sequences with frames also have a detector of
+another kind: OpenCV's HOG people detector, as its sample peopledetect.py
+runs it, its SVM margin through a logistic for a score
+(`eval/hog_detections.py`, `tests/data/README.md`), with its own threshold
+and with its low scores too. ctrack runs with the same defaults on each.
+Each cell is MOTA / IDF1, detections only.
 
 """
 

@@ -516,6 +516,40 @@ START_TEST(a_detector_never_that_sure_still_confirms)
 }
 END_TEST
 
+/* A detector whose scores are on a lower scale (every box 0.45 to 0.65,
+ * under high_score and start_score as the defaults read them): once it has
+ * given 50 boxes, its best 40% (from 0.6) set the scale, and its people
+ * are tracked as a sure detector's are. Three walkers, on from step 1:
+ * none is reported while the defaults' scale holds (17 steps of 3 boxes),
+ * all three by step 25. The fourth, who comes in at step 30, is reported
+ * after min_hits. */
+START_TEST(a_detector_on_a_lower_scale_starts_tracks)
+{
+    ct_tracker *t = test_tracker(NULL);
+    ct_track out[64];
+    test_step(t, 0, NULL, 0, out);
+    for (int k = 1; k <= 40; k++) {
+        ct_detection d[4];
+        size_t m = 0;
+        for (int i = 0; i < 4; i++) {
+            if (i == 3 && k < 30)
+                continue;
+            d[m] = walker(k * SEC / 10, 50 + 150 * i, 40);
+            d[m].score = 0.45f + 0.05f * (float)((k + i) % 5);
+            m++;
+        }
+        const size_t n = test_step(t, k * SEC / 10, d, m, out);
+        if (k <= 16)
+            ck_assert_uint_eq(n, 0);
+        if (k >= 25 && k < 30)
+            ck_assert_uint_eq(n, 3);
+        if (k >= 32)
+            ck_assert_uint_eq(n, 4);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 /* The first step's tracks are confirmed at once, middling scores too. */
 START_TEST(first_step_confirms_middling_scores)
 {
@@ -645,6 +679,7 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, middling_scores_confirm_once_the_detector_is_sure);
     tcase_add_test(tc, first_step_confirms_middling_scores);
     tcase_add_test(tc, a_detector_never_that_sure_still_confirms);
+    tcase_add_test(tc, a_detector_on_a_lower_scale_starts_tracks);
     tcase_add_test(tc, reported_boxes_follow_a_swaying_camera_and_smooth_a_jittery_detector);
     tcase_add_test(tc, boxes_a_detector_is_less_sure_of_are_trusted_less);
     suite_add_tcase(s, tc);

@@ -346,6 +346,22 @@ START_TEST(score_scale_bounds_confirmation_by_the_detector_best_boxes)
 }
 END_TEST
 
+// The score the best 40% of a detector's boxes reach, and how many it has
+// learnt: the scale on which high_score and start_score are read.
+START_TEST(score_scale_knows_the_detector_best_boxes)
+{
+    ScoreScale s;
+    ck_assert_float_eq(s.best(), 1.0f); // nothing seen: the top of the scale
+    ck_assert_uint_eq(s.count(), 0);
+    for (int k = 0; k < 1000; k++)
+        s.observe(0.3f + 0.4f * (k + 0.5f) / 1000); // spread over [0.3, 0.7]
+    ck_assert_uint_eq(s.count(), 1000);
+    ck_assert_float_eq_tol(s.best(), 0.54f, 0.011);
+    ck_assert_float_eq_tol(s.confirm(0.95f), s.best(), 1e-6);
+    ck_assert_float_eq(s.confirm(0.5f), 0.5f);
+}
+END_TEST
+
 // A long run keeps learning: the counts halve rather than overflow, and a
 // detector whose scores drop is followed.
 START_TEST(score_scale_keeps_learning)
@@ -677,6 +693,7 @@ int main(void)
     tcase_add_test(tc, size_gate_forgets_in_time);
     tcase_add_test(tc, score_scale_bounds_confirmation_by_the_detector_best_boxes);
     tcase_add_test(tc, score_scale_keeps_learning);
+    tcase_add_test(tc, score_scale_knows_the_detector_best_boxes);
     tcase_add_test(tc, score_noise_learns_how_far_each_score_strays);
     tcase_add_test(tc, person_size_fits_the_ground_line);
     tcase_add_test(tc, person_size_never_slopes_the_wrong_way);

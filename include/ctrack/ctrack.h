@@ -112,7 +112,11 @@ typedef struct ct_config {
      * Default 0 (CT_SOURCE_DETECTIONS); range [0, 1]. */
     int32_t source;
     /* Detections scoring at least this are matched first and may start a
-     * track.
+     * track. Read on the detector's own scale: where the best 40% of its
+     * boxes (from low_score up, learnt as the tracker runs, once 50 are
+     * known) score r < 0.9, this and start_score are taken times r / 0.9
+     * (scores on a scale of their own, such as an SVM's margin through a
+     * logistic). The public MOTChallenge detections' r is 0.96 to 0.99.
      * Default 0.6; range [0, 1]. */
     float high_score;
     /* Detections scoring below this are ignored; those between low_score and
@@ -235,7 +239,8 @@ typedef struct ct_config {
      * (and high_score) may start a (tentative) track; those between
      * high_score and this are matched first and continue tracks, but start
      * none. At or under high_score, every high-score detection may start
-     * one. See also confirm_score.
+     * one. Read on the detector's scale, as high_score. See also
+     * confirm_score.
      * Default 0.7; range [0, 1]. */
     float start_score;
     /* Non-zero: a lost track is reported (within report_lost_time) only

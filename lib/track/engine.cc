@@ -43,6 +43,16 @@ CT_TUNABLE(kBufferMax, "CTRACK_BUFFER_MAX", 0.5);
 // Whether a detector's boxes are trusted by their scores as the tracker
 // learns them (score_noise.h); 0 only in a tuning build's sweeps.
 CT_TUNABLE(kScoreNoise, "CTRACK_SCORE_NOISE", 1.0);
+// high_score and start_score are read on the scale of a detector whose best
+// 40% of boxes (from low_score up) score kScaleRef or more, as the public
+// MOTChallenge detections do (0.96 to 0.99). A detector whose best boxes
+// score less has both scaled down with them, once kScaleMinBoxes of its
+// boxes are known: its scores are on a scale of their own (an SVM's margin
+// through a logistic, a confidence spread lower), and on the defaults'
+// scale a track would start only from its rare best boxes (docs/tuning.md,
+// "The detector's scale for starting tracks").
+CT_TUNABLE(kScaleRef, "CTRACK_SCALE_REF", 0.9);
+constexpr uint32_t kScaleMinBoxes = 50;
 
 } // namespace
 
@@ -347,8 +357,7 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
     if (image.known() && size.image_height() != image.height)
         size.reset(image.height);
     constexpr double kEdge = 2;
-    const float score =
-        cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
+    const float score = cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : high_;
     for (const Track &t : state_.tracks) {
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
             continue;
@@ -472,8 +481,6 @@ void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
     det_used_.assign(n, 0);
     pool_dets_.clear();
     low_dets_.clear();
-    const float high =
-        cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : cfg_.high_score;
     // A detector's boxes far off the height its people have where they
     // stand are ignored (size_gate; the pixels' candidates have their own
     // size test).
@@ -481,14 +488,26 @@ void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
     const bool gate = size_gate_on();
     if (gate)
         learnt.size_gate.age(dt);
-    // The detector's scale of scores, learnt from the boxes that may start
-    // a track, bounds the score that confirms one (score_scale.h).
     if (cfg_.source == CT_SOURCE_DETECTIONS) {
+        // The detector's scale of scores, learnt from all its boxes, sets
+        // the scores that match first and start tracks (kScaleRef)...
         for (size_t j = 0; j < n; j++)
-            if (dets[j].score >= cfg_.start_score)
+            if (dets[j].score >= cfg_.low_score)
+                learnt.box_scores.observe(dets[j].score);
+        const double scale =
+            learnt.box_scores.count() >= kScaleMinBoxes
+                ? std::min(1.0, learnt.box_scores.best() / kScaleRef)
+                : 1.0;
+        high_ = (float)(cfg_.high_score * scale);
+        start_ = (float)(cfg_.start_score * scale);
+        // ... and, learnt from the boxes that may start a track, bounds
+        // the score that confirms one (score_scale.h).
+        for (size_t j = 0; j < n; j++)
+            if (dets[j].score >= start_)
                 learnt.scores.observe(dets[j].score);
         confirm_ = learnt.scores.confirm(cfg_.confirm_score);
     }
+    const float high = cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : high_;
     for (size_t j = 0; j < n; j++) {
         if (gate && !learnt.size_gate.admits(dets[j]))
             continue;
@@ -545,16 +564,17 @@ void Engine::associate(const ct_detection *dets, bool pixels)
 void Engine::start_tracks(const ct_detection *dets, int64_t t_us, bool first)
 {
     // New tracks from the high-score detections nobody claimed that reach
-    // start_score (a detector's boxes only: the pixels' candidates start
-    // at candidate_min_score). A tentative track is confirmed after
-    // min_hits once one of its detections reached confirm_score (update()).
+    // start_score on the detector's scale (a detector's boxes only: the
+    // pixels' candidates start at candidate_min_score). A tentative track
+    // is confirmed after min_hits once one of its detections reached
+    // confirm_score (update()).
     // With a detector's boxes the first step confirms them at once: there
     // is no earlier frame to wait for. Not the pixels' candidates: a
     // background model learns its first frame and finds none there, and
     // one primed on the recording (ct_tracker_prime()) finds fragments and
     // groups as in any frame (docs/tuning.md, "A recording's start").
     const bool confirm_now = first && cfg_.source == CT_SOURCE_DETECTIONS;
-    const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : cfg_.start_score;
+    const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : start_;
     for (int j : pool_dets_) {
         if ((int)state_.tracks.size() >= cfg_.max_tracks)
             break;

@@ -50,6 +50,7 @@ struct SceneModels {
     PersonSize size;
     SizeGate size_gate; // a detector's people's height (size_gate)
     ScoreScale scores;  // a detector's scale of scores (confirm_score)
+    ScoreScale box_scores; // ... of all its boxes (high_score, start_score)
     ScoreNoise score_noise; // how far a detector's boxes stray by score
     FitBias fit_bias;   // what the fit does to a detector's boxes (refine_boxes)
 };
@@ -233,6 +234,9 @@ private:
     // less where the detector's scores are lower (score_scale.h); 0 (none)
     // with the pixels' candidates, for which it is never learnt.
     float confirm_ = 0;
+    // high_score and start_score on the detector's scale of scores, this
+    // step (Engine::sort_detections()).
+    float high_ = 0, start_ = 0;
     bool appearance_ = false; // this step
     bool fit_boxes_ = false;  // this step: the reported boxes are fitted
     TemplateBank bank_;

@@ -35,10 +35,10 @@ void ScoreScale::observe(float score)
     }
 }
 
-float ScoreScale::confirm(float wanted) const
+float ScoreScale::best() const
 {
     if (total_ == 0)
-        return wanted;
+        return 1.0f;
     // The lower edge of the bin in which kBelow of the scores are reached.
     const double below = kBelow * total_;
     uint32_t sum = 0;
@@ -48,7 +48,7 @@ float ScoreScale::confirm(float wanted) const
         if (sum >= below)
             break;
     }
-    return std::min(wanted, (float)b / kBins);
+    return (float)b / kBins;
 }
 
 } // namespace ctrack
