@@ -550,6 +550,31 @@ START_TEST(a_detector_on_a_lower_scale_starts_tracks)
 }
 END_TEST
 
+/* However low a detector's scale, a box under low_score is ignored: a
+ * walker whose boxes score 0.12 (low_score 0.1) is tracked once the scale
+ * is learnt; when they score 0.095, they continue nothing and the track is
+ * lost (report_lost_time 0: not reported). */
+START_TEST(a_lower_scale_never_reaches_under_low_score)
+{
+    ct_config cfg = test_config();
+    cfg.report_lost_time = 0;
+    ck_assert_float_eq_tol(cfg.low_score, 0.1f, 1e-6);
+    ct_tracker *t = test_tracker(&cfg);
+    ct_track out[64];
+    test_step(t, 0, NULL, 0, out);
+    for (int k = 1; k <= 70; k++) {
+        ct_detection d = walker(k * SEC / 10, 50, 40);
+        d.score = k <= 60 ? 0.12f : 0.095f;
+        const size_t n = test_step(t, k * SEC / 10, &d, 1, out);
+        if (k >= 56 && k <= 60)
+            ck_assert_uint_eq(n, 1);
+        if (k > 60)
+            ck_assert_uint_eq(n, 0);
+    }
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 /* The first step's tracks are confirmed at once, middling scores too. */
 START_TEST(first_step_confirms_middling_scores)
 {
@@ -680,6 +705,7 @@ static Suite *lifecycle_suite(void)
     tcase_add_test(tc, first_step_confirms_middling_scores);
     tcase_add_test(tc, a_detector_never_that_sure_still_confirms);
     tcase_add_test(tc, a_detector_on_a_lower_scale_starts_tracks);
+    tcase_add_test(tc, a_lower_scale_never_reaches_under_low_score);
     tcase_add_test(tc, reported_boxes_follow_a_swaying_camera_and_smooth_a_jittery_detector);
     tcase_add_test(tc, boxes_a_detector_is_less_sure_of_are_trusted_less);
     suite_add_tcase(s, tc);

@@ -114,9 +114,10 @@ typedef struct ct_config {
     /* Detections scoring at least this are matched first and may start a
      * track. Read on the detector's own scale: where the best 40% of its
      * boxes (from low_score up, learnt as the tracker runs, once 50 are
-     * known) score r < 0.9, this and start_score are taken times r / 0.9
-     * (scores on a scale of their own, such as an SVM's margin through a
-     * logistic). The public MOTChallenge detections' r is 0.96 to 0.99.
+     * known) score r < 0.9, this and start_score are taken times r / 0.9,
+     * never under low_score (scores on a scale of their own, such as an
+     * SVM's margin through a logistic). The public MOTChallenge
+     * detections' r is 0.96 to 0.99.
      * Default 0.6; range [0, 1]. */
     float high_score;
     /* Detections scoring below this are ignored; those between low_score and

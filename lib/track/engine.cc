@@ -498,8 +498,9 @@ void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
             learnt.box_scores.count() >= kScaleMinBoxes
                 ? std::min(1.0, learnt.box_scores.best() / kScaleRef)
                 : 1.0;
-        high_ = (float)(cfg_.high_score * scale);
-        start_ = (float)(cfg_.start_score * scale);
+        // Never under low_score: a box under it is ignored on any scale.
+        high_ = std::max(cfg_.low_score, (float)(cfg_.high_score * scale));
+        start_ = std::max(cfg_.low_score, (float)(cfg_.start_score * scale));
         // ... and, learnt from the boxes that may start a track, bounds
         // the score that confirms one (score_scale.h).
         for (size_t j = 0; j < n; j++)
