@@ -25,7 +25,7 @@ size, TUD-Campus's (150 to 350) at their own.
 
 The frames are the luma of the Y4M files make eval decodes
 (cteval.data.video()); OpenCV's HOG is deterministic, so the files are
-made once and kept (some 5 minutes for PETS09-S2L1 on one core).
+made once and kept (some 10 minutes for PETS09-S2L1 on one core).
 """
 import os
 import sys
