@@ -616,8 +616,11 @@ of the box's height). The sequences with frames also have a detector of
 another kind: OpenCV's HOG people detector, as its sample peopledetect.py
 runs it, its SVM margin through a logistic for a score
 (`eval/hog_detections.py`, `tests/data/README.md`), with its own threshold
-and with its low scores too. ctrack runs with the same defaults on each.
-Each cell is MOTA / IDF1, detections only.
+and with its low scores too. ctrack runs with the same defaults on each,
+and the peers with their libraries' defaults, which start tracks from
+every box scoring over 0.25 (SORT) or 0.35 (ByteTrack): all of HOG's,
+hence their scores under zero on HOG's low scores. Each cell is MOTA /
+IDF1, detections only.
 
 """
 
