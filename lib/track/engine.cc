@@ -357,7 +357,6 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
     if (image.known() && size.image_height() != image.height)
         size.reset(image.height);
     constexpr double kEdge = 2;
-    const float score = cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : high_;
     for (const Track &t : state_.tracks) {
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us != t_us || t.det_index < 0)
             continue;
@@ -368,7 +367,7 @@ void Engine::learn_sizes(const ct_detection *dets, int64_t t_us, ImageSize image
             continue;
         if (gate)
             state_.learnt.size_gate.observe(d.top, d.height);
-        if (!image.known() || d.score < score ||
+        if (!image.known() || d.score < high_ ||
             (cfg_.source == CT_SOURCE_PIXELS && !pixels_.whole((size_t)t.det_index)))
             continue;
         size.observe(d.top, d.height, d.width);
@@ -488,6 +487,10 @@ void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
     const bool gate = size_gate_on();
     if (gate)
         learnt.size_gate.age(dt);
+    // The pixels' candidates match first and start tracks from
+    // candidate_min_score.
+    high_ = cfg_.candidate_min_score;
+    start_ = 0.0f;
     if (cfg_.source == CT_SOURCE_DETECTIONS) {
         // The detector's scale of scores, learnt from all its boxes, sets
         // the scores that match first and start tracks (kScaleRef)...
@@ -508,11 +511,10 @@ void Engine::sort_detections(double dt, const ct_detection *dets, size_t n)
                 learnt.scores.observe(dets[j].score);
         confirm_ = learnt.scores.confirm(cfg_.confirm_score);
     }
-    const float high = cfg_.source == CT_SOURCE_PIXELS ? cfg_.candidate_min_score : high_;
     for (size_t j = 0; j < n; j++) {
         if (gate && !learnt.size_gate.admits(dets[j]))
             continue;
-        if (dets[j].score >= high)
+        if (dets[j].score >= high_)
             pool_dets_.push_back((int)j);
         else if (dets[j].score >= cfg_.low_score)
             low_dets_.push_back((int)j);
@@ -575,11 +577,10 @@ void Engine::start_tracks(const ct_detection *dets, int64_t t_us, bool first)
     // one primed on the recording (ct_tracker_prime()) finds fragments and
     // groups as in any frame (docs/tuning.md, "A recording's start").
     const bool confirm_now = first && cfg_.source == CT_SOURCE_DETECTIONS;
-    const float start = cfg_.source == CT_SOURCE_PIXELS ? 0.0f : start_;
     for (int j : pool_dets_) {
         if ((int)state_.tracks.size() >= cfg_.max_tracks)
             break;
-        if (dets[j].score >= start)
+        if (dets[j].score >= start_)
             start_track(dets[j], j, t_us, confirm_now);
     }
 }

@@ -234,8 +234,9 @@ private:
     // less where the detector's scores are lower (score_scale.h); 0 (none)
     // with the pixels' candidates, for which it is never learnt.
     float confirm_ = 0;
-    // high_score and start_score on the detector's scale of scores, this
-    // step (Engine::sort_detections()).
+    // This step's scores that match first and start a track
+    // (Engine::sort_detections()): high_score and start_score on a
+    // detector's scale of scores, or the pixels' candidate_min_score and 0.
     float high_ = 0, start_ = 0;
     bool appearance_ = false; // this step
     bool fit_boxes_ = false;  // this step: the reported boxes are fitted
