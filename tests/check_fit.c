@@ -1,7 +1,8 @@
 /* Boxes fitted to the silhouette (ct_config.refine_boxes), on synthetic
  * frames with a detector's boxes: a box cut at the chest, where the coat is
  * the colour of the ground, grows to the feet; a box 30% too wide is
- * narrowed, one that runs past the feet ends near them, and a faint
+ * narrowed, one that runs past the feet ends near them, one that starts
+ * far above the head ends at it, and a faint
  * person's box is narrowed as the detector's others were; on a
  * camera that pans, the boxes are as without the fit. */
 #include <math.h>
@@ -22,6 +23,7 @@ typedef struct {
     double box_cut;                /* the detector's box covers this share of its height */
     double box_wide;               /* ... and this times its width */
     double box_shift;              /* ... moved this many widths to the right */
+    double box_above;              /* ... and starts this share of its height above its head */
     bool faint;                    /* only its head and feet differ from the ground */
 } person;
 
@@ -85,9 +87,11 @@ static size_t render(const person *ps, int n, int k, int pan, uint8_t *y, uint8_
                 y[r * W + c] = (uint8_t)(20 + 8 * i);
                 u[(r / 2) * (W / 2) + c / 2] = (uint8_t)(100 + 10 * i);
             }
-        const double bw = width_of(p) * p->box_wide, bh = p->height * p->box_cut;
+        const double bw = width_of(p) * p->box_wide;
+        const double bh = p->height * (p->box_cut + p->box_above);
         d[nd++] = test_det((float)(cx - bw / 2 + p->box_shift * width_of(p)),
-                           (float)(p->feet - p->height), (float)bw, (float)bh, 0.99f);
+                           (float)(p->feet - p->height * (1 + p->box_above)), (float)bw,
+                           (float)bh, 0.99f);
     }
     return nd;
 }
@@ -219,6 +223,29 @@ START_TEST(past_the_feet_ends_at_the_feet)
 }
 END_TEST
 
+START_TEST(a_box_taller_than_a_person_ends_at_the_head)
+{
+    /* A detector's box that starts a third of the person's height above
+     * their head (the head of someone behind, joined to theirs in one box,
+     * or a loose top) is more than one person whose feet are at its bottom:
+     * fitted, it is that person, head to feet; without the fit it stays. */
+    person ps[6];
+    int n = crowd(ps);
+    ps[n] = newcomer(60, 1, 1);
+    ps[n].box_above = 0.35;
+    n++;
+    ct_track on[16], off[16];
+    const ct_track *fit, *raw;
+    fitted_and_raw(ps, n, on, off, &fit, &raw);
+    const double tall = ps[n - 1].height, feet = ps[n - 1].feet;
+    ck_assert_float_le(raw->top, feet - 1.25 * tall);
+    ck_assert_msg(fabs(fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g", fit->top,
+                  feet - tall);
+    ck_assert_msg(fabs(fit->top + fit->height - feet) < 0.08 * tall, "feet %g, person's %g",
+                  fit->top + fit->height, feet);
+}
+END_TEST
+
 START_TEST(a_faint_person_takes_the_detectors_learnt_width)
 {
     /* A detector whose boxes are all 1.4 times too wide. The fit narrows
@@ -334,6 +361,7 @@ int main(void)
     tcase_add_test(tc, cut_at_the_chest_grows_to_the_feet);
     tcase_add_test(tc, too_wide_is_narrowed);
     tcase_add_test(tc, past_the_feet_ends_at_the_feet);
+    tcase_add_test(tc, a_box_taller_than_a_person_ends_at_the_head);
     tcase_add_test(tc, a_faint_person_takes_the_detectors_learnt_width);
     tcase_add_test(tc, a_moving_camera_is_left_alone);
     tcase_add_test(tc, a_box_to_the_side_moves_to_the_person);

@@ -674,6 +674,40 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 }
 END_TEST
 
+// A detector's box more than a tenth taller than the person whose feet are
+// at its bottom row becomes that person; a box within a tenth, or where
+// the people's size does not speak (above the highest feet it has seen by
+// more than a person), keeps its rows.
+START_TEST(a_box_over_more_than_one_person_is_cut_to_one)
+{
+    PersonSize size;
+    size.reset(200);
+    Box b{36, 40, 28, 120};
+    ck_assert(!cut_to_one_person(size, &b)); // the size is not known yet
+    for (int k = 0; k < 400; k++) {
+        const double y = 100 + k % 100, h = 0.6 * y;
+        size.observe(y - h, h, 0.35 * h);
+    }
+    size.learn();
+    const double tall = size.height_at(160);
+    ck_assert_double_eq_tol(tall, 96, 5);
+    ck_assert(cut_to_one_person(size, &b)); // 120 rows, feet at 160
+    ck_assert_double_eq_tol(b.top + b.height, 160, 1e-9);
+    ck_assert_double_eq_tol(b.height, tall, 1e-9);
+    ck_assert_double_eq_tol(b.left, 36, 1e-9);
+    ck_assert_double_eq_tol(b.width, 28, 1e-9);
+    Box one{36, 160 - 1.05 * tall, 28, 1.05 * tall};
+    const Box before = one;
+    ck_assert(!cut_to_one_person(size, &one));
+    ck_assert_double_eq_tol(one.top, before.top, 1e-9);
+    ck_assert_double_eq_tol(one.height, before.height, 1e-9);
+    ck_assert(!size.speaks_at(10));
+    Box high{36, 0, 28, 10};
+    ck_assert(!cut_to_one_person(size, &high));
+    ck_assert_double_eq_tol(high.height, 10, 1e-9);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("track");
@@ -681,6 +715,7 @@ int main(void)
     tcase_add_test(tc, filter_learns_a_constant_velocity);
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
+    tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
     tcase_add_test(tc, filter_prediction_grows_with_time);
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);

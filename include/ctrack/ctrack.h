@@ -289,7 +289,9 @@ typedef struct ct_config {
      * between the head's top and the feet; a detector's box much wider
      * than the silhouette is narrowed to it, its height moves 0.7 of the
      * way to the silhouette's head to feet, and with the people's size
-     * known a box cut short of a person's height grows to the feet. Where
+     * known a box cut short of a person's height grows to the feet and a
+     * detector's box more than a tenth taller than a person whose feet
+     * are at its bottom becomes that person. Where
      * the silhouette does not show one person clearly (the background
      * model's first second, the second after the camera moved, another
      * track over a sixth of the box) the box is left as it is; a

@@ -216,6 +216,19 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     return true;
 }
 
+bool cut_to_one_person(const PersonSize &size, Box *b)
+{
+    const double feet = b->top + b->height;
+    if (!size.speaks_at(feet))
+        return false;
+    const double tall = size.height_at(feet);
+    if (!(tall > 0) || !(b->height > kOnePerson * tall))
+        return false;
+    b->top = feet - tall;
+    b->height = tall;
+    return true;
+}
+
 void FitBias::learn(const Box &detector, const Box &fitted)
 {
     if (!(detector.width > 0 && detector.height > 0))

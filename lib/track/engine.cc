@@ -803,6 +803,8 @@ void Engine::fit_reported(ImageSize image)
             // does to its boxes on average.
             fitted_[i] = detector ? state_.learnt.fit_bias.apply(b) : b;
         }
+        if (detector)
+            cut_to_one_person(state_.learnt.size, &fitted_[i]);
         if (!clip_box(image, &fitted_[i]))
             fitted_[i] = b;
     }
