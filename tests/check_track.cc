@@ -708,6 +708,34 @@ START_TEST(a_box_over_more_than_one_person_is_cut_to_one)
 }
 END_TEST
 
+// Where people are taller than the prior's bound (400 pixels: close to a
+// high-definition camera), the size's height is held there and measures
+// no one: a person 600 pixels tall keeps their box.
+START_TEST(a_box_taller_than_the_prior_bound_is_not_cut)
+{
+    PersonSize size;
+    size.reset(1080);
+    for (int k = 0; k < 400; k++) {
+        const double y = 500 + 5 * (k % 100), h = 0.6 * y;
+        size.observe(y - h, h, 0.35 * h);
+    }
+    size.learn();
+    ck_assert(size.known() && size.speaks_at(1000));
+    ck_assert_double_eq_tol(size.height_at(1000), PersonSize::kPriorMaxHeight, 1e-9);
+    ck_assert(!size.line_holds_at(1000));
+    Box tall{100, 400, 240, 600};
+    ck_assert(!cut_to_one_person(size, &tall));
+    ck_assert_double_eq_tol(tall.top, 400, 1e-9);
+    ck_assert_double_eq_tol(tall.height, 600, 1e-9);
+    // Where the line is its own (300 pixels at row 500), a box 1.3 times
+    // that is cut.
+    ck_assert(size.line_holds_at(500));
+    Box two{100, 500 - 1.3 * size.height_at(500), 120, 1.3 * size.height_at(500)};
+    ck_assert(cut_to_one_person(size, &two));
+    ck_assert_double_eq_tol(two.height, size.height_at(500), 1e-9);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("track");
@@ -716,6 +744,7 @@ int main(void)
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
+    tcase_add_test(tc, a_box_taller_than_the_prior_bound_is_not_cut);
     tcase_add_test(tc, filter_prediction_grows_with_time);
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);

@@ -133,6 +133,12 @@ bool PersonSize::speaks_at(double y) const
     return known_ && y >= top_feet_ - kFeetMargin * height_at(top_feet_);
 }
 
+bool PersonSize::line_holds_at(double y) const
+{
+    const double h = slope_ * y + intercept_;
+    return known_ && h >= kLowest && h < kPriorMaxHeight;
+}
+
 double PersonSize::height_at(double y) const
 {
     if (!known_)

@@ -37,6 +37,10 @@ public:
     // unknown.
     double height_at(double y) const;
     double width_at(double y) const { return aspect_ * height_at(y); }
+    // Whether height_at(y) is the fitted line's own, not held at the
+    // prior's bounds: where people are taller than the prior's 400 pixels
+    // (a high-definition camera, people close to it), height_at() says 400.
+    bool line_holds_at(double y) const;
     // A typical person's height where people are seen (frame pixels): the
     // line's height at the mean feet row of what was observed (the bands
     // weighed as in the fit); 0 while unknown.
