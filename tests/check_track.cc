@@ -708,31 +708,54 @@ START_TEST(a_box_over_more_than_one_person_is_cut_to_one)
 }
 END_TEST
 
-// Where people are taller than the prior's bound (400 pixels: close to a
-// high-definition camera), the size's height is held there and measures
-// no one: a person 600 pixels tall keeps their box.
-START_TEST(a_box_taller_than_the_prior_bound_is_not_cut)
+// Where the size's line runs past its bound (the image's height, or 400
+// pixels on a smaller image), its height is held there and measures no
+// one: a box there keeps its rows; where the line is its own, a box 1.3
+// times its height is cut.
+START_TEST(a_box_where_the_size_is_held_at_its_bound_is_not_cut)
 {
     PersonSize size;
-    size.reset(1080);
+    size.reset(480);
     for (int k = 0; k < 400; k++) {
-        const double y = 500 + 5 * (k % 100), h = 0.6 * y;
+        const double y = 300 + 1.7 * (k % 100), h = 2 * y - 400; // 200 to 536
         size.observe(y - h, h, 0.35 * h);
     }
     size.learn();
-    ck_assert(size.known() && size.speaks_at(1000));
-    ck_assert_double_eq_tol(size.height_at(1000), PersonSize::kPriorMaxHeight, 1e-9);
-    ck_assert(!size.line_holds_at(1000));
-    Box tall{100, 400, 240, 600};
-    ck_assert(!cut_to_one_person(size, &tall));
-    ck_assert_double_eq_tol(tall.top, 400, 1e-9);
-    ck_assert_double_eq_tol(tall.height, 600, 1e-9);
-    // Where the line is its own (300 pixels at row 500), a box 1.3 times
-    // that is cut.
-    ck_assert(size.line_holds_at(500));
-    Box two{100, 500 - 1.3 * size.height_at(500), 120, 1.3 * size.height_at(500)};
+    ck_assert_double_eq(size.max_height(), 480);
+    ck_assert(size.known() && size.speaks_at(470));
+    ck_assert_double_eq_tol(size.height_at(470), 480, 1e-9);
+    ck_assert(!size.line_holds_at(470));
+    Box held{100, 470 - 1.3 * 480, 200, 1.3 * 480};
+    const Box before = held;
+    ck_assert(!cut_to_one_person(size, &held));
+    ck_assert_double_eq_tol(held.top, before.top, 1e-9);
+    ck_assert_double_eq_tol(held.height, before.height, 1e-9);
+    ck_assert(size.line_holds_at(350));
+    const double tall = size.height_at(350);
+    ck_assert_double_eq_tol(tall, 300, 30);
+    Box two{100, 350 - 1.3 * tall, 120, 1.3 * tall};
     ck_assert(cut_to_one_person(size, &two));
-    ck_assert_double_eq_tol(two.height, size.height_at(500), 1e-9);
+    ck_assert_double_eq_tol(two.height, tall, 1e-9);
+}
+END_TEST
+
+// On a high-definition camera, people close to it are far taller than the
+// prior's 400 pixels: the size follows them up to the image's height.
+START_TEST(person_size_knows_people_taller_than_the_prior)
+{
+    PersonSize p;
+    p.reset(1080);
+    for (int k = 0; k < 400; k++) {
+        const double y = 500 + 5 * (k % 100), h = 0.6 * y; // 300 to 597
+        p.observe(y - h, h, 0.35 * h);
+    }
+    p.learn();
+    ck_assert_double_eq(p.max_height(), 1080);
+    ck_assert_double_eq_tol(p.height_at(1000), 600, 60);
+    ck_assert(p.line_holds_at(1000));
+    ck_assert(p.typical_height() > PersonSize::kPriorMaxHeight);
+    p.reset(240);
+    ck_assert_double_eq(p.max_height(), PersonSize::kPriorMaxHeight);
 }
 END_TEST
 
@@ -744,7 +767,7 @@ int main(void)
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
-    tcase_add_test(tc, a_box_taller_than_the_prior_bound_is_not_cut);
+    tcase_add_test(tc, a_box_where_the_size_is_held_at_its_bound_is_not_cut);
     tcase_add_test(tc, filter_prediction_grows_with_time);
     tcase_add_test(tc, filter_update_weighs_the_measurement);
     tcase_add_test(tc, track_follows_its_detections);
@@ -761,6 +784,7 @@ int main(void)
     tcase_add_test(tc, score_noise_learns_how_far_each_score_strays);
     tcase_add_test(tc, person_size_fits_the_ground_line);
     tcase_add_test(tc, person_size_never_slopes_the_wrong_way);
+    tcase_add_test(tc, person_size_knows_people_taller_than_the_prior);
     tcase_add_test(tc, scene_motion_follows_the_innovations_in_time);
     tcase_add_test(tc, scene_noise_whitens_the_innovations);
     suite_add_tcase(s, tc);

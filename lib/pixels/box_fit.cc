@@ -218,9 +218,8 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
 
 bool cut_to_one_person(const PersonSize &size, Box *b)
 {
-    // Where the line is held at the prior's bounds, a person of that
-    // height is no measure of anyone (people 600 pixels tall would all be
-    // cut to 400).
+    // Where the line is held at its bounds (PersonSize::max_height()), that
+    // height is no measure of anyone: everyone taller would be cut to it.
     const double feet = b->top + b->height;
     if (!size.speaks_at(feet) || !size.line_holds_at(feet))
         return false;

@@ -122,7 +122,7 @@ void PersonSize::learn()
     // bottom: no flat ground seen from above): a constant height.
     slope_ = bands >= 2 && vy > 0 ? std::max(0.0, (syh / sw - my * mh) / vy) : 0.0;
     intercept_ = mh - slope_ * my;
-    typical_ = std::min(kPriorMaxHeight, std::max(kLowest, mh));
+    typical_ = std::min(max_height(), std::max(kLowest, mh));
     aspect_ = quantile_of(aspect_hist_, kBins, aspect_count_, kWidthQuantile, kLowestAspect,
                           kAspectStep);
     known_ = true;
@@ -133,17 +133,22 @@ bool PersonSize::speaks_at(double y) const
     return known_ && y >= top_feet_ - kFeetMargin * height_at(top_feet_);
 }
 
+double PersonSize::max_height() const
+{
+    return std::max(kPriorMaxHeight, (double)image_height_);
+}
+
 bool PersonSize::line_holds_at(double y) const
 {
     const double h = slope_ * y + intercept_;
-    return known_ && h >= kLowest && h < kPriorMaxHeight;
+    return known_ && h >= kLowest && h < max_height();
 }
 
 double PersonSize::height_at(double y) const
 {
     if (!known_)
         return 0;
-    return std::min(kPriorMaxHeight, std::max(kLowest, slope_ * y + intercept_));
+    return std::min(max_height(), std::max(kLowest, slope_ * y + intercept_));
 }
 
 } // namespace ctrack

@@ -4,7 +4,8 @@
 // - y_horizon) (Renno, Orwell and Jones 2002; Hoiem, Efros and Hebert 2008);
 // the model fits that line robustly to the boxes of confident single-person
 // tracks, and until it has seen enough it only knows a weak prior: people
-// are 30 to 400 pixels tall.
+// are 30 to 400 pixels tall (then, up to the image's height where that is
+// more).
 #ifndef CTRACK_PERSON_SIZE_H
 #define CTRACK_PERSON_SIZE_H
 
@@ -14,7 +15,8 @@ namespace ctrack {
 
 class PersonSize {
 public:
-    // The prior: people are between these heights, in frame pixels.
+    // The prior: people are between these heights, in frame pixels (the
+    // most, on an image taller than it, the image's height: max_height()).
     static constexpr double kPriorMinHeight = 30, kPriorMaxHeight = 400;
 
     // Forgets everything; the image is `image_height` rows tall.
@@ -37,10 +39,14 @@ public:
     // unknown.
     double height_at(double y) const;
     double width_at(double y) const { return aspect_ * height_at(y); }
-    // Whether height_at(y) is the fitted line's own, not held at the
-    // prior's bounds: where people are taller than the prior's 400 pixels
-    // (a high-definition camera, people close to it), height_at() says 400.
+    // Whether height_at(y) is the fitted line's own, not held at its
+    // bounds (max_height() above: where the line runs past the image's
+    // height, height_at() says that height).
     bool line_holds_at(double y) const;
+    // The tallest person the model allows: the prior's 400 pixels, or the
+    // image's height where that is more (a high-definition camera shows
+    // people close to it far taller than 400 pixels).
+    double max_height() const;
     // A typical person's height where people are seen (frame pixels): the
     // line's height at the mean feet row of what was observed (the bands
     // weighed as in the fit); 0 while unknown.
