@@ -36,10 +36,10 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
 // A detector's box more than a tenth taller than a person whose feet are
 // at its bottom row (where the people's size speaks, and its line is its
 // own, not held at its bounds: PersonSize::line_holds_at()) is not one
-// person's: the head of someone behind, or a top left loose. It becomes that one person, from
-// its bottom row up, as the fit takes a silhouette's extent
-// (docs/tuning.md, "A detector's box over more than one person"). True
-// when *b was cut.
+// person's: the head of someone behind, or a top left loose. It becomes
+// that one person, from its bottom row up, as the fit takes a
+// silhouette's extent (docs/tuning.md, "A detector's box over more than
+// one person"). True when *b was cut.
 bool cut_to_one_person(const PersonSize &size, Box *b);
 
 // What the fit does to a detector's boxes, learnt online from the boxes it
