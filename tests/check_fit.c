@@ -96,6 +96,26 @@ static size_t render(const person *ps, int n, int k, int pan, uint8_t *y, uint8_
     return nd;
 }
 
+/* Feeds t frame k of the scene with its detections; its tracks into out
+ * (returns their count). */
+static size_t feed(ct_tracker *t, const person *ps, int n, int k, int pan, ct_track *out)
+{
+    static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
+    ct_detection d[16];
+    const size_t nd = render(ps, n, k, pan, y, u, v, d);
+    ct_frame f = test_frame(k * STEP, W, H);
+    f.format = CT_FORMAT_I420;
+    f.planes[0] = y;
+    f.planes[1] = u;
+    f.planes[2] = v;
+    f.strides[0] = W;
+    f.strides[1] = f.strides[2] = W / 2;
+    ck_assert_msg(ct_tracker_feed(t, &f, d, nd) == CT_OK, "%s", ct_tracker_last_error(t));
+    size_t count = 0;
+    ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);
+    return count;
+}
+
 /* Runs the scene for `frames` frames with detections and pixels, the fit on
  * or off; the last step's tracks into out (returns their count). */
 static size_t run(const person *ps, int n, int frames, int pan, int refine, ct_track *out)
@@ -103,21 +123,9 @@ static size_t run(const person *ps, int n, int frames, int pan, int refine, ct_t
     ct_config cfg = test_config();
     cfg.refine_boxes = refine;
     ct_tracker *t = test_tracker(&cfg);
-    static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
-    ct_detection d[16];
     size_t count = 0;
-    for (int k = 0; k < frames; k++) {
-        const size_t nd = render(ps, n, k, pan, y, u, v, d);
-        ct_frame f = test_frame(k * STEP, W, H);
-        f.format = CT_FORMAT_I420;
-        f.planes[0] = y;
-        f.planes[1] = u;
-        f.planes[2] = v;
-        f.strides[0] = W;
-        f.strides[1] = f.strides[2] = W / 2;
-        ck_assert_msg(ct_tracker_feed(t, &f, d, nd) == CT_OK, "%s", ct_tracker_last_error(t));
-        ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);
-    }
+    for (int k = 0; k < frames; k++)
+        count = feed(t, ps, n, k, pan, out);
     ct_tracker_destroy(t);
     return count;
 }
@@ -134,16 +142,22 @@ static const ct_track *near_x(const ct_track *tr, size_t n, double x)
     return best;
 }
 
-/* The scene run for 90 frames with the fit and without, on a still camera:
- * the last frame's track nearest the last person's centre in each (*fit,
- * *raw; on and off hold the tracks). */
-static void fitted_and_raw(const person *ps, int n, ct_track *on, ct_track *off,
-                           const ct_track **fit, const ct_track **raw)
+/* The crowd below and the person under test, the last of ps, run for 90
+ * frames on a still camera with the fit and without: the last frame's
+ * track nearest that person's centre in each. */
+typedef struct {
+    person ps[6];
+    int n;
+    ct_track on[16], off[16];
+    const ct_track *fit, *raw;
+} scene;
+
+static void fit_and_not(scene *s)
 {
-    const size_t a = run(ps, n, 90, 0, 1, on), b = run(ps, n, 90, 0, 0, off);
-    const double x = centre_at(&ps[n - 1], 89);
-    *fit = near_x(on, a, x);
-    *raw = near_x(off, b, x);
+    const size_t a = run(s->ps, s->n, 90, 0, 1, s->on), b = run(s->ps, s->n, 90, 0, 0, s->off);
+    const double x = centre_at(&s->ps[s->n - 1], 89);
+    s->fit = near_x(s->on, a, x);
+    s->raw = near_x(s->off, b, x);
 }
 
 /* People at several depths in the left half who teach the tracker their
@@ -168,38 +182,40 @@ static person newcomer(int enter, double cut, double wide)
                     .enter = enter, .box_cut = cut, .box_wide = wide};
 }
 
+/* s set to the crowd and p after it; returns p's place, to be changed
+ * before fit_and_not(). */
+static person *crowd_and(scene *s, person p)
+{
+    s->n = crowd(s->ps);
+    s->ps[s->n] = p;
+    return &s->ps[s->n++];
+}
+
 START_TEST(cut_at_the_chest_grows_to_the_feet)
 {
-    person ps[6];
-    int n = crowd(ps);
+    scene s;
     /* In from frame 60, its coat the ground's colour, its box cut there. */
-    ps[n] = newcomer(60, 0.45, 1);
-    ps[n].coat_like_ground = true;
-    n++;
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double tall = ps[n - 1].height;
+    person *p = crowd_and(&s, newcomer(60, 0.45, 1));
+    p->coat_like_ground = true;
+    fit_and_not(&s);
+    const double tall = p->height;
     /* Unfitted: the cut box. Fitted: head to feet. */
-    ck_assert_float_le(raw->height, 0.6 * tall);
-    ck_assert_msg(fabs(fit->height - tall) < 0.15 * tall, "fitted height %g, person %g",
-                  fit->height, tall);
-    ck_assert_msg(fabs(fit->top - (ps[n - 1].feet - tall)) < 0.1 * tall, "top %g", fit->top);
+    ck_assert_float_le(s.raw->height, 0.6 * tall);
+    ck_assert_msg(fabs(s.fit->height - tall) < 0.15 * tall, "fitted height %g, person %g",
+                  s.fit->height, tall);
+    ck_assert_msg(fabs(s.fit->top - (p->feet - tall)) < 0.1 * tall, "top %g", s.fit->top);
 }
 END_TEST
 
 START_TEST(too_wide_is_narrowed)
 {
-    person ps[6];
-    int n = crowd(ps);
-    ps[n++] = newcomer(60, 1, 1.3);
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double w = width_of(&ps[n - 1]);
-    ck_assert_float_ge(raw->width, 1.25 * w);
-    ck_assert_msg(fit->width <= 1.15 * w && fit->width >= 0.7 * w, "fitted width %g, person %g",
-                  fit->width, w);
+    scene s;
+    const person *p = crowd_and(&s, newcomer(60, 1, 1.3));
+    fit_and_not(&s);
+    const double w = width_of(p);
+    ck_assert_float_ge(s.raw->width, 1.25 * w);
+    ck_assert_msg(s.fit->width <= 1.15 * w && s.fit->width >= 0.7 * w,
+                  "fitted width %g, person %g", s.fit->width, w);
 }
 END_TEST
 
@@ -208,18 +224,15 @@ START_TEST(past_the_feet_ends_at_the_feet)
     /* A detector's box that runs a fifth of the person's height past the
      * feet ends near them: a line the feet have not reached is not
      * crossed. The box's top stays at the head. */
-    person ps[6];
-    int n = crowd(ps);
-    ps[n++] = newcomer(60, 1.2, 1);
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double tall = ps[n - 1].height, feet = ps[n - 1].feet;
-    ck_assert_float_ge(raw->top + raw->height, feet + 0.15 * tall);
-    ck_assert_msg(fabs(fit->top + fit->height - feet) < 0.08 * tall, "fitted feet %g, person's %g",
-                  fit->top + fit->height, feet);
-    ck_assert_msg(fabs(fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g", fit->top,
-                  feet - tall);
+    scene s;
+    const person *p = crowd_and(&s, newcomer(60, 1.2, 1));
+    fit_and_not(&s);
+    const double tall = p->height, feet = p->feet;
+    ck_assert_float_ge(s.raw->top + s.raw->height, feet + 0.15 * tall);
+    ck_assert_msg(fabs(s.fit->top + s.fit->height - feet) < 0.08 * tall,
+                  "fitted feet %g, person's %g", s.fit->top + s.fit->height, feet);
+    ck_assert_msg(fabs(s.fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g",
+                  s.fit->top, feet - tall);
 }
 END_TEST
 
@@ -229,20 +242,16 @@ START_TEST(a_box_taller_than_a_person_ends_at_the_head)
      * their head (the head of someone behind, joined to theirs in one box,
      * or a loose top) is more than one person whose feet are at its bottom:
      * fitted, it is that person, head to feet; without the fit it stays. */
-    person ps[6];
-    int n = crowd(ps);
-    ps[n] = newcomer(60, 1, 1);
-    ps[n].box_above = 0.35;
-    n++;
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double tall = ps[n - 1].height, feet = ps[n - 1].feet;
-    ck_assert_float_le(raw->top, feet - 1.25 * tall);
-    ck_assert_msg(fabs(fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g", fit->top,
-                  feet - tall);
-    ck_assert_msg(fabs(fit->top + fit->height - feet) < 0.08 * tall, "feet %g, person's %g",
-                  fit->top + fit->height, feet);
+    scene s;
+    person *p = crowd_and(&s, newcomer(60, 1, 1));
+    p->box_above = 0.35;
+    fit_and_not(&s);
+    const double tall = p->height, feet = p->feet;
+    ck_assert_float_le(s.raw->top, feet - 1.25 * tall);
+    ck_assert_msg(fabs(s.fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g",
+                  s.fit->top, feet - tall);
+    ck_assert_msg(fabs(s.fit->top + s.fit->height - feet) < 0.08 * tall, "feet %g, person's %g",
+                  s.fit->top + s.fit->height, feet);
 }
 END_TEST
 
@@ -252,17 +261,14 @@ START_TEST(a_faint_person_takes_the_detectors_learnt_width)
      * the crowd's and learns it; a person the colour of the ground but for
      * head and feet (too little foreground for a fit) is narrowed as the
      * others were, about the same centre; without the fit, not at all. */
-    person ps[6];
-    int n = crowd(ps);
-    for (int i = 0; i < n; i++)
-        ps[i].box_wide = 1.4;
-    ps[n] = newcomer(60, 1, 1.4);
-    ps[n].faint = true;
-    n++;
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double w = width_of(&ps[n - 1]);
+    scene s;
+    person *p = crowd_and(&s, newcomer(60, 1, 1.4));
+    p->faint = true;
+    for (int i = 0; i < s.n - 1; i++)
+        s.ps[i].box_wide = 1.4;
+    fit_and_not(&s);
+    const double w = width_of(p);
+    const ct_track *fit = s.fit, *raw = s.raw;
     ck_assert_float_ge(raw->width, 1.35 * w);
     ck_assert_msg(fit->width <= 1.25 * w && fit->width >= 0.8 * w, "width %g, person %g",
                   fit->width, w);
@@ -276,18 +282,16 @@ START_TEST(a_moving_camera_is_left_alone)
 {
     /* The ground pans 4 pixels a frame: the boxes are as without the fit,
      * to the bit. */
-    person ps[6];
-    int n = crowd(ps);
-    ps[n++] = newcomer(0, 0.45, 1.3);
-    ct_track on[16], off[16];
-    const size_t a = run(ps, n, 90, 4, 1, on), b = run(ps, n, 90, 4, 0, off);
+    scene s;
+    crowd_and(&s, newcomer(0, 0.45, 1.3));
+    const size_t a = run(s.ps, s.n, 90, 4, 1, s.on), b = run(s.ps, s.n, 90, 4, 0, s.off);
     ck_assert_uint_eq(a, b);
     ck_assert_uint_gt(a, 0);
     for (size_t i = 0; i < a; i++) {
-        ck_assert_float_eq(on[i].left, off[i].left);
-        ck_assert_float_eq(on[i].top, off[i].top);
-        ck_assert_float_eq(on[i].width, off[i].width);
-        ck_assert_float_eq(on[i].height, off[i].height);
+        ck_assert_float_eq(s.on[i].left, s.off[i].left);
+        ck_assert_float_eq(s.on[i].top, s.off[i].top);
+        ck_assert_float_eq(s.on[i].width, s.off[i].width);
+        ck_assert_float_eq(s.on[i].height, s.off[i].height);
     }
 }
 END_TEST
@@ -296,17 +300,13 @@ START_TEST(a_box_to_the_side_moves_to_the_person)
 {
     /* A detector whose boxes sit a fifth of a person's width to the right:
      * the fit moves them most of the way back; without it they stay. */
-    person ps[6];
-    int n = crowd(ps);
-    ps[n] = newcomer(60, 1, 1);
-    ps[n].box_shift = 0.2;
-    n++;
-    ct_track on[16], off[16];
-    const ct_track *fit, *raw;
-    fitted_and_raw(ps, n, on, off, &fit, &raw);
-    const double x = centre_at(&ps[n - 1], 89), w = width_of(&ps[n - 1]);
-    const double raw_off = raw->left + raw->width / 2 - x;
-    const double fit_off = fit->left + fit->width / 2 - x;
+    scene s;
+    person *p = crowd_and(&s, newcomer(60, 1, 1));
+    p->box_shift = 0.2;
+    fit_and_not(&s);
+    const double x = centre_at(p, 89), w = width_of(p);
+    const double raw_off = s.raw->left + s.raw->width / 2 - x;
+    const double fit_off = s.fit->left + s.fit->width / 2 - x;
     ck_assert_msg(raw_off > 0.15 * w, "unfitted %g off", raw_off);
     ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted %g off, unfitted %g", fit_off, raw_off);
 }
@@ -325,21 +325,10 @@ START_TEST(clipped_boxes_stay_in_the_image)
     ct_config cfg = test_config();
     cfg.clip_boxes = 1;
     ct_tracker *t = test_tracker(&cfg);
-    static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
-    ct_detection d[16];
     ct_track out[16];
-    size_t count = 0, seen = 0;
+    size_t seen = 0;
     for (int k = 0; k < 90; k++) {
-        const size_t nd = render(ps, n, k, 0, y, u, v, d);
-        ct_frame f = test_frame(k * STEP, W, H);
-        f.format = CT_FORMAT_I420;
-        f.planes[0] = y;
-        f.planes[1] = u;
-        f.planes[2] = v;
-        f.strides[0] = W;
-        f.strides[1] = f.strides[2] = W / 2;
-        ck_assert_int_eq(ct_tracker_feed(t, &f, d, nd), CT_OK);
-        ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);
+        const size_t count = feed(t, ps, n, k, 0, out);
         for (size_t i = 0; i < count; i++) {
             ck_assert_float_ge(out[i].left, 0);
             ck_assert_float_ge(out[i].top, 0);
