@@ -103,13 +103,7 @@ static size_t feed(ct_tracker *t, const person *ps, int n, int k, int pan, ct_tr
     static uint8_t y[W * H], u[W * H / 4], v[W * H / 4];
     ct_detection d[16];
     const size_t nd = render(ps, n, k, pan, y, u, v, d);
-    ct_frame f = test_frame(k * STEP, W, H);
-    f.format = CT_FORMAT_I420;
-    f.planes[0] = y;
-    f.planes[1] = u;
-    f.planes[2] = v;
-    f.strides[0] = W;
-    f.strides[1] = f.strides[2] = W / 2;
+    ct_frame f = test_i420(k * STEP, W, H, y, u, v);
     ck_assert_msg(ct_tracker_feed(t, &f, d, nd) == CT_OK, "%s", ct_tracker_last_error(t));
     size_t count = 0;
     ck_assert_int_eq(ct_tracker_get_tracks(t, out, 16, sizeof *out, &count), CT_OK);

@@ -61,14 +61,7 @@ static void draw(image *im, double gain, double cx, double cy, double sd)
 
 static ct_frame frame_of(const image *im, int64_t us)
 {
-    ct_frame f = test_frame(us, W, H);
-    f.format = CT_FORMAT_I420;
-    f.planes[0] = im->y;
-    f.planes[1] = im->u;
-    f.planes[2] = im->v;
-    f.strides[0] = W;
-    f.strides[1] = f.strides[2] = W / 2;
-    return f;
+    return test_i420(us, W, H, im->y, im->u, im->v);
 }
 
 static ct_tracker *pixels_tracker(void)

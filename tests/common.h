@@ -35,6 +35,21 @@ static inline ct_frame test_frame(int64_t us, int w, int h)
     return f;
 }
 
+/* An I420 frame at time `us` of w x h pixels, its planes' rows packed
+ * (strides w, w / 2 and w / 2). */
+static inline ct_frame test_i420(int64_t us, int w, int h, const uint8_t *y, const uint8_t *u,
+                                 const uint8_t *v)
+{
+    ct_frame f = test_frame(us, w, h);
+    f.format = CT_FORMAT_I420;
+    f.planes[0] = y;
+    f.planes[1] = u;
+    f.planes[2] = v;
+    f.strides[0] = w;
+    f.strides[1] = f.strides[2] = w / 2;
+    return f;
+}
+
 static inline ct_detection test_det(float l, float t, float w, float h, float score)
 {
     ct_detection d;
