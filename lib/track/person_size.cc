@@ -140,7 +140,7 @@ double PersonSize::max_height() const
 
 bool PersonSize::line_holds_at(double y) const
 {
-    const double h = slope_ * y + intercept_;
+    const double h = line_at(y);
     return known_ && h >= kLowest && h < max_height();
 }
 
@@ -148,7 +148,7 @@ double PersonSize::height_at(double y) const
 {
     if (!known_)
         return 0;
-    return std::min(max_height(), std::max(kLowest, slope_ * y + intercept_));
+    return std::min(max_height(), std::max(kLowest, line_at(y)));
 }
 
 } // namespace ctrack

@@ -61,6 +61,8 @@ public:
     int image_height() const { return image_height_; }
 
 private:
+    // The fitted line's height at feet row y, unbounded.
+    double line_at(double y) const { return slope_ * y + intercept_; }
     // Heights are kept per band of rows, as counts of log-spaced bins.
     static constexpr int kBands = 16;
     static constexpr int kBins = 48;
