@@ -185,6 +185,16 @@ static person *crowd_and(scene *s, person p)
     return &s->ps[s->n++];
 }
 
+/* Box b runs from p's head to its feet, to within 0.08 of its height. */
+static void assert_head_to_feet(const ct_track *b, const person *p)
+{
+    const double tall = p->height, feet = p->feet;
+    ck_assert_msg(fabs(b->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g", b->top,
+                  feet - tall);
+    ck_assert_msg(fabs(b->top + b->height - feet) < 0.08 * tall, "feet %g, person's %g",
+                  b->top + b->height, feet);
+}
+
 START_TEST(cut_at_the_chest_grows_to_the_feet)
 {
     scene s;
@@ -221,12 +231,8 @@ START_TEST(past_the_feet_ends_at_the_feet)
     scene s;
     const person *p = crowd_and(&s, newcomer(60, 1.2, 1));
     fit_and_not(&s);
-    const double tall = p->height, feet = p->feet;
-    ck_assert_float_ge(s.raw->top + s.raw->height, feet + 0.15 * tall);
-    ck_assert_msg(fabs(s.fit->top + s.fit->height - feet) < 0.08 * tall,
-                  "fitted feet %g, person's %g", s.fit->top + s.fit->height, feet);
-    ck_assert_msg(fabs(s.fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g",
-                  s.fit->top, feet - tall);
+    ck_assert_float_ge(s.raw->top + s.raw->height, p->feet + 0.15 * p->height);
+    assert_head_to_feet(s.fit, p);
 }
 END_TEST
 
@@ -240,12 +246,8 @@ START_TEST(a_box_taller_than_a_person_ends_at_the_head)
     person *p = crowd_and(&s, newcomer(60, 1, 1));
     p->box_above = 0.35;
     fit_and_not(&s);
-    const double tall = p->height, feet = p->feet;
-    ck_assert_float_le(s.raw->top, feet - 1.25 * tall);
-    ck_assert_msg(fabs(s.fit->top - (feet - tall)) < 0.08 * tall, "top %g, person's %g",
-                  s.fit->top, feet - tall);
-    ck_assert_msg(fabs(s.fit->top + s.fit->height - feet) < 0.08 * tall, "feet %g, person's %g",
-                  s.fit->top + s.fit->height, feet);
+    ck_assert_float_le(s.raw->top, p->feet - 1.25 * p->height);
+    assert_head_to_feet(s.fit, p);
 }
 END_TEST
 
