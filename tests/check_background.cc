@@ -586,16 +586,18 @@ START_TEST(groups_split_by_the_learnt_size)
 END_TEST
 
 // The people's size speaks for blobs whose feet are at most a person's
-// height above the highest feet it has seen; above, its line falls to
+// height above the highest feet it has seen, and where its line's person
+// is at least 0.7 of the one at those feet; elsewhere its line falls to
 // nothing and would cut a blob there into slivers a few pixels wide, so
 // the prior decides there, as before the size is known: a blob 14 columns
-// wide and 30 rows tall stays whole.
+// wide and 30 rows tall stays whole, above the margin and within it.
 START_TEST(the_size_speaks_only_near_the_feet_it_saw)
 {
     const int s = Background::kStartScale;
     // People 40 rows tall with their feet at row 100, 20 at row 70: the
-    // line's horizon at row 40; it speaks from a person's height (20 rows)
-    // above row 70.
+    // line's horizon at row 40. A person's height (20 rows) above row 70
+    // is row 50, but the line's person there is 7 rows tall; it is 14
+    // rows, 0.7 of 20, at row 61.
     PersonSize size;
     size.reset(H * s);
     for (int k = 0; k < 40; k++) {
@@ -605,18 +607,21 @@ START_TEST(the_size_speaks_only_near_the_feet_it_saw)
     size.learn();
     ck_assert(size.known());
     ck_assert(size.speaks_at(100 * s));
-    ck_assert(size.speaks_at(55 * s));
+    ck_assert(size.speaks_at(62 * s));
+    ck_assert(!size.speaks_at(58 * s)); // within the margin, too small a person
     ck_assert(!size.speaks_at(45 * s));
     ck_assert(!PersonSize().speaks_at(100 * s));
-    Vec<uint8_t> m(W * H, 0);
-    fill(m, 20, 15, 34, 45); // its feet at row 45, where the line says 5 rows
     BlobFinder bf;
     Classifier cls;
     Vec<Rect> out;
-    bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
-    ck_assert_int_eq((int)out.size(), 1);
-    ck_assert_int_eq(out[0].x0, 20);
-    ck_assert_int_eq(out[0].x1, 34);
+    for (const int feet : {45, 56}) { // where the line says 3 and 11 rows
+        Vec<uint8_t> m(W * H, 0);
+        fill(m, 20, feet - 30, 34, feet);
+        bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
+        ck_assert_int_eq((int)out.size(), 1);
+        ck_assert_int_eq(out[0].x0, 20);
+        ck_assert_int_eq(out[0].x1, 34);
+    }
 }
 END_TEST
 

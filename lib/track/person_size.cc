@@ -26,6 +26,12 @@ CT_TUNABLE(kWidthQuantile, "CTRACK_WIDTH_QUANTILE", 0.75);
 // the model speaks for a blob's size (PersonSize::speaks_at(); docs/tuning.md,
 // "Where the people's size speaks").
 CT_TUNABLE(kFeetMargin, "CTRACK_FEET_MARGIN", 1.0);
+// Nor where its line's person is under kMinShrink of the person at those
+// feet: a line fitted to a narrow band of feet rows can fall to a few
+// pixels within that margin, and a blob there would be taken for a group
+// of such people and cut into slivers a column wide (docs/tuning.md,
+// "Where the people's size speaks").
+CT_TUNABLE(kMinShrink, "CTRACK_MIN_SHRINK", 0.7);
 // A band's counts are halved past this, so that the model keeps learning.
 constexpr uint32_t kMaxBand = 1000;
 // A band weighs at most this many samples in the fit.
@@ -130,7 +136,10 @@ void PersonSize::learn()
 
 bool PersonSize::speaks_at(double y) const
 {
-    return known_ && y >= top_feet_ - kFeetMargin * height_at(top_feet_);
+    if (!known_)
+        return false;
+    const double at_feet = height_at(top_feet_);
+    return y >= top_feet_ - kFeetMargin * at_feet && line_at(y) >= kMinShrink * at_feet;
 }
 
 double PersonSize::max_height() const

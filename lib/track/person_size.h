@@ -28,8 +28,9 @@ public:
 
     // Whether enough was observed for the fit to speak.
     bool known() const { return known_; }
-    // Whether it speaks for a person whose feet are at row y: known, and y
-    // no higher than a person's height above the highest feet it has seen.
+    // Whether it speaks for a person whose feet are at row y: known, y no
+    // higher than a person's height above the highest feet it has seen, and
+    // its line's person at y not much smaller than the one at those feet.
     // Above them its line is an extrapolation that falls to nothing at the
     // horizon it guesses, which on a street-level camera, whose people's
     // feet fill a narrow band of rows, it guesses badly.
