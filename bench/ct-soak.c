@@ -20,6 +20,7 @@
 #include <time.h>
 
 #include "ctrack/ctrack.h"
+#include "i420.h"
 
 static long rss_kib(void)
 {
@@ -145,12 +146,7 @@ static int soak(long n, int pixels, soak_result *res)
         size_t nd = 0;
         if (pixels) {
             draw(y, u, v, w, h, i, tall);
-            f.format = CT_FORMAT_I420;
-            f.planes[0] = y;
-            f.planes[1] = u;
-            f.planes[2] = v;
-            f.strides[0] = w;
-            f.strides[1] = f.strides[2] = w / 2;
+            set_i420_planes(&f, y, u, v);
         } else {
             for (long k = i / kPeriod - 6; k <= i / kPeriod && nd < 8; k++) {
                 if (k < 0)

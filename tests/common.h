@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "ctrack/ctrack.h"
+#include "i420.h"
 
 static inline ct_config test_config(void)
 {
@@ -41,12 +42,7 @@ static inline ct_frame test_i420(int64_t us, int w, int h, const uint8_t *y, con
                                  const uint8_t *v)
 {
     ct_frame f = test_frame(us, w, h);
-    f.format = CT_FORMAT_I420;
-    f.planes[0] = y;
-    f.planes[1] = u;
-    f.planes[2] = v;
-    f.strides[0] = w;
-    f.strides[1] = f.strides[2] = w / 2;
+    set_i420_planes(&f, y, u, v);
     return f;
 }
 
