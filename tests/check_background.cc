@@ -522,6 +522,23 @@ PersonSize forty_rows_tall(double aspect)
     return p;
 }
 
+// A size model that has seen people `tall1` working rows tall and
+// `wide1` wide with their tops at row `top1`, and people `tall2` by
+// `wide2` with their tops at row `top2`: a line through two depths.
+PersonSize two_depths(int top1, int tall1, int wide1, int top2, int tall2, int wide2)
+{
+    const int s = Background::kStartScale;
+    PersonSize size;
+    size.reset(H * s);
+    for (int k = 0; k < 40; k++) {
+        size.observe((top1 + k % 3 - 1) * s, tall1 * s, wide1 * s);
+        size.observe((top2 + k % 3 - 1) * s, tall2 * s, wide2 * s);
+    }
+    size.learn();
+    ck_assert(size.known());
+    return size;
+}
+
 } // namespace
 
 // Blobs: two fragments of one person stacked one above the other are
@@ -598,14 +615,7 @@ START_TEST(the_size_speaks_only_near_the_feet_it_saw)
     // line's horizon at row 40. A person's height (20 rows) above row 70
     // is row 50, but the line's person there is 7 rows tall; it is 14
     // rows, 0.7 of 20, at row 61.
-    PersonSize size;
-    size.reset(H * s);
-    for (int k = 0; k < 40; k++) {
-        size.observe((60 + k % 3 - 1) * s, 40 * s, 16 * s);
-        size.observe((50 + k % 3 - 1) * s, 20 * s, 8 * s);
-    }
-    size.learn();
-    ck_assert(size.known());
+    const PersonSize size = two_depths(60, 40, 16, 50, 20, 8);
     ck_assert(size.speaks_at(100 * s));
     ck_assert(size.speaks_at(62 * s));
     ck_assert(!size.speaks_at(58 * s)); // within the margin, too small a person
@@ -784,6 +794,71 @@ START_TEST(pair_splits_between_heads)
                 m[r * W + c] = 255;
     bf.find(m.data(), W, H, Background::kStartScale, nullptr, 0, size, cls, out);
     ck_assert_int_eq((int)out.size(), 1);
+}
+END_TEST
+
+// Someone behind: a person partly hidden behind another, their feet higher
+// in the image, makes one blob with two heads on its top edge. The
+// people's size, learnt on a camera at street level (people with feet at
+// row 110 some 80 rows tall, at row 90 some 50), puts under the lower head
+// a person whose feet are well above the blob's bottom: besides the whole
+// blob, their box, from that head to those feet, is a candidate. Not for
+// one person alone, nor for two side by side with their feet on one row
+// (the size puts both heads' people on the blob's bottom), nor while the
+// size is unknown.
+START_TEST(someone_behind_is_a_candidate)
+{
+    const int s = Background::kStartScale;
+    const PersonSize size = two_depths(30, 80, 32, 40, 50, 20);
+    // The person the size puts under a head at row 40, drawn so.
+    const int tall = (int)std::lround(size.height_under_head(40 * s) / s);
+    ck_assert_int_ge(tall, 35);
+    ck_assert_int_le(tall, 55);
+    // A figure: a head a seventh of its height, on a body `w` columns wide.
+    auto figure = [](Vec<uint8_t> &m, int centre, int top, int h, int w) {
+        const int head = h / 7;
+        fill(m, centre - w / 6, top, centre + w / 6 + 1, top + head);
+        fill(m, centre - w / 2, top + head, centre + w / 2, top + h);
+    };
+    auto behind = [](const BlobFinder &bf, const Vec<Rect> &out) {
+        int n = 0;
+        for (size_t i = 0; i < out.size(); i++)
+            n += bf.behind_part(i);
+        return n;
+    };
+    BlobFinder bf;
+    Classifier cls;
+    Vec<Rect> out;
+    Vec<uint8_t> m(W * H, 0);
+    figure(m, 78, 30, 80, 24); // in front: feet at row 110
+    bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
+    ck_assert_int_eq((int)out.size(), 1);
+    ck_assert_int_eq(behind(bf, out), 0);
+    figure(m, 60, 40, tall, 16); // behind, its feet some 30 rows up
+    bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
+    ck_assert_int_eq(behind(bf, out), 1);
+    for (size_t i = 0; i < out.size(); i++) {
+        const Rect &r = out[i];
+        if (bf.behind_part(i)) {
+            ck_assert(!bf.whole(i));
+            ck_assert_int_le(std::abs(r.y0 - 40), 1);
+            ck_assert_int_le(std::abs(r.y1 - (40 + tall)), 2);
+            ck_assert_int_le(std::abs((r.x0 + r.x1) / 2 - 60), 3);
+        } else {
+            ck_assert(bf.whole(i));
+            ck_assert_int_le(r.x0, 52);
+            ck_assert_int_ge(r.x1, 90);
+        }
+    }
+    bf.find(m.data(), W, H, s, nullptr, 0, PersonSize(), cls, out);
+    ck_assert_int_eq(behind(bf, out), 0);
+    // Side by side, their feet on one row: both heads' people stand on the
+    // blob's bottom.
+    std::fill(m.begin(), m.end(), 0);
+    figure(m, 60, 30, 80, 24);
+    figure(m, 78, 30, 80, 24);
+    bf.find(m.data(), W, H, s, nullptr, 0, size, cls, out);
+    ck_assert_int_eq(behind(bf, out), 0);
 }
 END_TEST
 
@@ -1243,6 +1318,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, fragments_merge_up_to_a_person_height);
     tcase_add_test(tc, close_pair_splits_between_tracks);
     tcase_add_test(tc, pair_splits_between_heads);
+    tcase_add_test(tc, someone_behind_is_a_candidate);
     tcase_add_test(tc, library_silhouettes_are_pedestrians);
     tcase_add_test(tc, a_pair_is_no_pedestrian);
     tcase_add_test(tc, fill_of_the_convex_hull);

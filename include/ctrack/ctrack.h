@@ -532,7 +532,9 @@ typedef struct ct_candidate {
 } ct_candidate;
 
 /* Copies the candidates of the last step, like ct_tracker_get_tracks() (in
- * the order found). With source CT_SOURCE_DETECTIONS there are none, unless
+ * the order found): the blobs, and boxes the people's size draws for someone
+ * partly hidden behind the person a blob is (each over that blob's box).
+ * With source CT_SOURCE_DETECTIONS there are none, unless
  * verify_detections is set and the frame had pixels: then one per detection
  * given, in order, with the box as given. */
 CT_API int ct_tracker_get_candidates(const ct_tracker *tracker, ct_candidate *out,

@@ -51,6 +51,17 @@ CT_TUNABLE(kHeadWidth, "CTRACK_HEAD_WIDTH", 0.12);
 // candidate_min_score), and above the whole blob.
 constexpr double kHeadsVote = 0.8;
 constexpr int kMaxHalfWindow = 16;
+// Someone behind the person a blob is (BlobFinder::behind()): a second
+// head at least this many blob heights from the highest (half the gap
+// between two people side by side: one behind the other stand closer in
+// the image), under which the people's size puts a person whose feet are
+// at least kBehindFeet of their height above the blob's bottom. Chosen
+// over both sequences' condition families (docs/tuning.md, "Someone
+// behind").
+CT_TUNABLE(kBehindGap, "CTRACK_BEHIND_GAP", 0.1);
+CT_TUNABLE(kBehindFeet, "CTRACK_BEHIND_FEET", 0.2);
+// No box where the size's line is within this of a slope of 1 (behind()).
+constexpr double kMinHeadSlope = 0.05;
 
 bool overlaps_x(const Rect &a, const Rect &b, double fraction)
 {
@@ -318,15 +329,9 @@ bool BlobFinder::one_head_each(const Rect &r, const Vec<int> &hs, const Vec<int>
     return true;
 }
 
-int BlobFinder::between_heads(const Rect &r, Classifier &cls)
+int BlobFinder::second_head(const Vec<int> &top, int h1, int gap, double dip)
 {
-    const int bw = r.x1 - r.x0, bh = r.y1 - r.y0;
-    const Vec<int> &top = top_edge(r);
-    // The highest column is one head; the other is the highest column at
-    // least kMinCentreGap heights away with a dip of kHeadDip heights below
-    // both between them.
-    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
-    const int gap = (int)std::ceil(kMinCentreGap * bh);
+    const int bw = (int)top.size();
     int h2 = -1;
     for (int dir : {-1, 1}) {
         // Walking away from h1, d is the deepest column passed (the first
@@ -337,10 +342,22 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
                 d = i;
             if (std::abs(i - h1) < gap || (h2 >= 0 && top[i] >= top[h2]))
                 continue;
-            if (top[d] - std::max(top[i], top[h1]) >= kHeadDip * bh)
+            if (top[d] - std::max(top[i], top[h1]) >= dip)
                 h2 = i;
         }
     }
+    return h2;
+}
+
+int BlobFinder::between_heads(const Rect &r, Classifier &cls)
+{
+    const int bh = r.y1 - r.y0;
+    const Vec<int> &top = top_edge(r);
+    // The highest column is one head; the other is the highest column at
+    // least kMinCentreGap heights away with a dip of kHeadDip heights below
+    // both between them.
+    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
+    const int h2 = second_head(top, h1, (int)std::ceil(kMinCentreGap * bh), kHeadDip * bh);
     if (h2 < 0)
         return -1;
     // The template decides: both parts must be pedestrians by its vote,
@@ -350,6 +367,46 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
     if (vote(cls, rows_of(r, r.x0, cut)) > whole && vote(cls, rows_of(r, cut, r.x1)) > whole)
         return cut;
     return -1;
+}
+
+void BlobFinder::behind(const Rect &r, int s, const PersonSize &size, Vec<Rect> &out)
+{
+    // Where a person's height grows about as fast as their feet go down
+    // the image (the line's slope near 1), every head sits on about one
+    // row, and a head's row tells nothing of its person: a row's error
+    // moves their height slope / (1 - slope) rows.
+    if (!size.known() || std::fabs(1 - size.slope()) < kMinHeadSlope)
+        return;
+    const int bh = r.y1 - r.y0;
+    const Vec<int> &top = top_edge(r);
+    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
+    const int h2 = second_head(top, h1, (int)std::ceil(kBehindGap * bh), kHeadDip * bh);
+    if (h2 < 0)
+        return;
+    // The person the size's line puts under each head; both must have one
+    // (a head above the horizon the line guesses is no one's).
+    const double tall1 = size.height_under_head((double)top[h1] * s);
+    const double tall2 = size.height_under_head((double)top[h2] * s);
+    if (!(tall1 > 0 && tall2 > 0))
+        return;
+    const Impl &m = *impl_;
+    for (const int hk : {h1, h2}) {
+        // On a camera at street level the one behind has the lower head;
+        // looking down, the higher: either may be theirs.
+        const double head = (double)top[hk] * s;
+        const double tall = hk == h1 ? tall1 : tall2;
+        const double feet = head + tall;
+        if (feet > r.y1 * s - kBehindFeet * tall)
+            continue;
+        const double half = size.width_at(feet) / s / 2;
+        const int x0 = std::max(0, (int)std::lround(r.x0 + hk - half));
+        const int x1 = std::min(m.w, (int)std::lround(r.x0 + hk + half));
+        const int y1 = std::min(m.h, (int)std::lround(feet / s));
+        if (x1 - x0 < 2 || y1 - top[hk] < 4)
+            continue;
+        out.push_back(Rect{x0, top[hk], x1, y1});
+        whole_.push_back(kBehind);
+    }
 }
 
 void BlobFinder::find(const uint8_t *mask, int w, int h, int scale, const Rect *predicted,
@@ -516,6 +573,7 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
         if (head_cut < 0) {
             out.push_back(r);
             whole_.push_back(kWhole);
+            behind(r, s, size, out);
             return;
         }
     }

@@ -27,7 +27,8 @@ public:
     // its blobs: those at least min_area pixels, fragments of one person
     // (stacked one above the other) merged, and blobs wider than a person
     // split, at the predicted boxes' centres when tracks are there, else
-    // into equal parts at the valleys of the column profile. What counts as
+    // into equal parts at the valleys of the column profile; beside a whole
+    // blob, a box for someone it hides in part behind (behind()). What counts as
     // a speck, a person's height and a person's width come from `size`
     // (frame pixels; a working pixel of the mask is `scale` frame pixels
     // across); `cls` votes where a merge or a split is in doubt.
@@ -43,6 +44,10 @@ public:
     // top edge: its neighbours' arms and legs fill its outline's hollows, so
     // its fill says nothing of its shape.
     bool headed_part(size_t i) const { return whole_[i] == kHeadedPart; }
+    // Whether it is someone behind the person a whole blob is (behind()):
+    // a box the people's size draws under a head on the blob's top edge,
+    // not a part of the blob.
+    bool behind_part(size_t i) const { return whole_[i] == kBehind; }
     // How many heads blob r shows on its top edge, as the split finds them
     // (heads()).
     int head_count(const Rect &r);
@@ -77,6 +82,17 @@ private:
     // top edge, when the contour template takes both parts for pedestrians
     // and scores them above the whole: the column, or -1.
     int between_heads(const Rect &r, Classifier &cls);
+    // The column of the highest point of `top` at least `gap` columns from
+    // column h1 (its highest), with the edge between them dipping `dip`
+    // rows below both; -1 if none.
+    static int second_head(const Vec<int> &top, int h1, int gap, double dip);
+    // Someone behind the person whole blob r is, whom it hides in part:
+    // under one of its two highest heads (second_head(), half as far
+    // apart as between_heads() asks; the line must put a person under
+    // both), the person the people's size puts there, when their feet are
+    // well above the blob's bottom. Their box, from that head to those
+    // feet and as wide as a person there, goes into `out` beside r.
+    void behind(const Rect &r, int scale, const PersonSize &size, Vec<Rect> &out);
     // r's top edge: each column's first foreground row (r.y1 if none), in
     // Impl::tops.
     Vec<int> &top_edge(const Rect &r);
@@ -93,7 +109,7 @@ private:
     bool cut_between_heads(const Rect &r, const Vec<int> &hs, Classifier &cls, Vec<int> &cuts);
     // Whether each part between the cuts [r.x0, ..., r.x1] holds one head.
     static bool one_head_each(const Rect &r, const Vec<int> &hs, const Vec<int> &cuts);
-    enum : char { kPart, kWhole, kHeadedPart };
+    enum : char { kPart, kWhole, kHeadedPart, kBehind };
     struct Impl;
     Owned<Impl> impl_;
     Vec<char> whole_;

@@ -92,11 +92,10 @@ int feet_row(const View &v, int y0, int y1, int c0, int c1)
 // person whose head is at its top has.
 void grow_cut(const View &v, const PersonSize &size, int c0, int c1, Box *b)
 {
-    const double slope = size.slope();
-    if (!size.known() || slope >= 1)
+    if (!size.known() || size.slope() >= 1)
         return;
     const double head = b->top;
-    const double tall = (slope * head + size.intercept()) / (1 - slope);
+    const double tall = size.height_under_head(head);
     if (tall > 0 && b->height < kCut * tall) {
         const int feet = feet_row(v, v.row((head + kCut * tall) / v.s),
                                   v.row((head + kFeetReach * tall) / v.s), c0, c1);

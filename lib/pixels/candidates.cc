@@ -78,7 +78,7 @@ size_t PixelCandidates::memory_bytes() const
     return background_.memory_bytes() + (kept_ ? kept_->memory_bytes() : 0) +
            blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
-           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() +
+           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() + behind_.capacity() +
            rects_.capacity() * sizeof(Rect);
 }
 
@@ -143,15 +143,25 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
     out.clear();
     whole_.clear();
+    behind_.clear();
     rects_.clear();
+    bool dropped = false; // the last blob, a ghost or an object put down
     for (size_t i = 0; i < blob_rects_.size(); i++) {
         const Rect &r = blob_rects_[i];
-        // A ghost is learnt at once and is no candidate.
-        long frame_edges, model_edges;
-        background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
-        if (model_edges > kGhostEdges * frame_edges || put_down(tracks, r)) {
-            background_.absorb(img, blobs_.cleaned(), r);
-            continue;
+        // A ghost is learnt at once and is no candidate. A box drawn for
+        // someone behind a blob's person is no blob: it goes with the blob
+        // it was drawn in, which comes before it.
+        if (blobs_.behind_part(i)) {
+            if (dropped)
+                continue;
+        } else {
+            long frame_edges, model_edges;
+            background_.outline_edges(img, blobs_.cleaned(), r, &frame_edges, &model_edges);
+            dropped = model_edges > kGhostEdges * frame_edges || put_down(tracks, r);
+            if (dropped) {
+                background_.absorb(img, blobs_.cleaned(), r);
+                continue;
+            }
         }
         float regions;
         ct_candidate c = classifier_.candidate(
@@ -179,6 +189,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
         out.push_back(c);
         dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
         whole_.push_back(blobs_.whole(i));
+        behind_.push_back(blobs_.behind_part(i));
         rects_.push_back(r);
     }
     counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();

@@ -53,6 +53,9 @@ public:
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.
     bool whole(size_t i) const { return whole_[i] != 0; }
+    // Whether candidate i is someone behind the person a blob is
+    // (BlobFinder::behind_part()).
+    bool behind(size_t i) const { return i < behind_.size() && behind_[i] != 0; }
     // Whether this step's candidate i (of find()) moved inside since the
     // frame before (Background::live(); computed when asked).
     bool live(size_t i) const;
@@ -98,7 +101,7 @@ private:
     bool have_mask_ = false; // this step
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
-    Vec<char> whole_;
+    Vec<char> whole_, behind_;
     Vec<Rect> rects_; // this step's candidates' blobs, working pixels
 };
 

@@ -40,6 +40,12 @@ CT_TUNABLE(kObjectReach, "CTRACK_OBJECT_REACH", 0.15);
 // association's buffer").
 CT_TUNABLE(kBufferSd, "CTRACK_BUFFER_SD", 4.0);
 CT_TUNABLE(kBufferMax, "CTRACK_BUFFER_MAX", 0.5);
+// From the pixels alone, a box drawn for someone behind the person a blob
+// is (BlobFinder::behind()) meets only tracks within this ratio of its
+// height either way: the blob's own person's track, of another height,
+// would shrink to it and lose its person (docs/tuning.md, "Someone
+// behind").
+CT_TUNABLE(kBehindRatio, "CTRACK_BEHIND_RATIO", 0.8);
 // Whether a detector's boxes are trusted by their scores as the tracker
 // learns them (score_noise.h); 0 only in a tuning build's sweeps.
 CT_TUNABLE(kScoreNoise, "CTRACK_SCORE_NOISE", 1.0);
@@ -249,6 +255,8 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
         gate_.overlapping(i, t.cue, min_iou, pairs_, reach,
                           buffered ? buffers_[(size_t)i] : 0.0);
     }
+    if (cfg_.source == CT_SOURCE_PIXELS)
+        drop_other_heights(track_idx, det_idx, dets);
     if (w > 0)
         add_appearance(track_idx, det_idx, n, m, w);
     assigner_.solve(n, m, pairs_, limit, row_to_col_);
@@ -265,6 +273,22 @@ void Engine::match(Vec<int> &track_idx, Vec<int> &det_idx,
     det_idx.erase(std::remove_if(det_idx.begin(), det_idx.end(),
                                  [this](int d) { return det_used_[(size_t)d] != 0; }),
                   det_idx.end());
+}
+
+void Engine::drop_other_heights(const Vec<int> &track_idx, const Vec<int> &det_idx,
+                                const ct_detection *dets)
+{
+    pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(),
+                                [&](const Pair &p) {
+                                    const int d = det_idx[(size_t)p.col];
+                                    if (!pixels_.behind((size_t)d))
+                                        return false;
+                                    const Track &t =
+                                        state_.tracks[(size_t)track_idx[(size_t)p.row]];
+                                    const double r = dets[d].height / t.box().height;
+                                    return !(r >= kBehindRatio && r <= 1 / kBehindRatio);
+                                }),
+                 pairs_.end());
 }
 
 void Engine::add_appearance(const Vec<int> &track_idx, const Vec<int> &det_idx, int n, int m,

@@ -174,6 +174,10 @@ private:
     // compared without the pixels (kBufferSd): the track's sd_after_hit in
     // its heights.
     double buffer(const Track &t) const;
+    // From match(): the pairs of a box drawn for someone behind a blob's
+    // person with a track of another height (kBehindRatio) dropped.
+    void drop_other_heights(const Vec<int> &track_idx, const Vec<int> &det_idx,
+                            const ct_detection *dets);
     // The costs of match()'s pairs: 1 - IoU, plus appearance_weight (1 -
     // DDIS) where pairs compete.
     void add_appearance(const Vec<int> &track_idx, const Vec<int> &det_idx, int n, int m,

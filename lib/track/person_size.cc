@@ -142,6 +142,14 @@ bool PersonSize::speaks_at(double y) const
     return y >= top_feet_ - kFeetMargin * at_feet && line_at(y) >= kMinShrink * at_feet;
 }
 
+double PersonSize::height_under_head(double y) const
+{
+    if (!known_ || std::fabs(1 - slope_) < 1e-6)
+        return 0;
+    const double tall = (slope_ * y + intercept_) / (1 - slope_);
+    return tall > 0 ? tall : 0;
+}
+
 double PersonSize::max_height() const
 {
     return std::max(kPriorMaxHeight, (double)image_height_);

@@ -40,6 +40,12 @@ public:
     // unknown.
     double height_at(double y) const;
     double width_at(double y) const { return aspect_ * height_at(y); }
+    // The height (frame pixels) of the person the fitted line puts under a
+    // head at row y: h with h = slope * (y + h) + intercept, their feet at
+    // y + h; 0 where there is none (unknown, a line as steep as the rows
+    // themselves, or a head above the horizon it guesses). Not held at the
+    // bounds: callers judge the person it gives.
+    double height_under_head(double y) const;
     // Whether height_at(y) is the fitted line's own, not held at its
     // bounds (max_height() above: where the line runs past the image's
     // height, height_at() says that height).
