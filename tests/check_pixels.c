@@ -462,8 +462,10 @@ START_TEST(a_new_frame_size_starts_the_model_again)
 END_TEST
 
 /* A pedestrian's shape `tall` pixels tall, its top centre at (cx, top):
- * head, neck, torso with arms, and two legs, drawn over what is there. */
-static void draw_pedestrian_of(image *im, double cx, int top, int tall)
+ * head, neck, torso with arms, and two legs, drawn over what is there; in
+ * clothes of a plain dark grey, or with `stripes` (bands 3 pixels wide that
+ * move with the person, as a pattern on clothes does). */
+static void draw_dressed_pedestrian(image *im, double cx, int top, int tall, bool stripes)
 {
     const int half = (int)(0.14 * tall) + 1;
     for (int y = top; y < top + tall && y < H; y++)
@@ -482,12 +484,18 @@ static void draw_pedestrian_of(image *im, double cx, int top, int tall)
                 in = fabs(u) < 0.11 && fabs(u) > 0.1 * (v - 0.55) / 0.45 * 0.5;
             if (!in)
                 continue;
-            im->y[y * W + x] = (uint8_t)(60 + (x * 5 + y * 3) % 9);
+            im->y[y * W + x] = (uint8_t)(stripes ? 40 + 50 * (((int)(x - cx + 1000) / 3) % 2)
+                                                 : 60 + (x * 5 + y * 3) % 9);
             im->u[(y / 2) * (W / 2) + x / 2] = 90;
             im->v[(y / 2) * (W / 2) + x / 2] = 200;
             im->uv[(y / 2) * W + 2 * (x / 2)] = 90;
             im->uv[(y / 2) * W + 2 * (x / 2) + 1] = 200;
         }
+}
+
+static void draw_pedestrian_of(image *im, double cx, int top, int tall)
+{
+    draw_dressed_pedestrian(im, cx, top, tall, false);
 }
 
 static void draw_pedestrian(image *im, double cx, int top)
@@ -1221,6 +1229,44 @@ START_TEST(people_side_by_side_are_split)
 }
 END_TEST
 
+/* Two people walk apart from the first frame on, in clothes with a
+ * pattern (one each way, 3 pixels a frame at 10 frames/s). Fed live, the background
+ * model takes both for background in frame 1, and for its first second
+ * holds them in pieces; what changed from one frame to the next shows them
+ * where they are, and each is tracked within the first second, under one
+ * id from then on. */
+START_TEST(walkers_of_the_first_frame_are_found_live)
+{
+    ct_tracker *t = street_tracker();
+    static image im;
+    ct_track out[64];
+    uint64_t id[2] = {0, 0};
+    int found[2] = {-1, -1};
+    for (int k = 0; k < 30; k++) {
+        const double cx[2] = {120 - 3.0 * k, 200 + 3.0 * k};
+        draw(&im, -1, 0);
+        for (int p = 0; p < 2; p++)
+            draw_dressed_pedestrian(&im, cx[p], 80, 70, true);
+        const size_t n = step_pixels(t, &im, CT_FORMAT_I420, k * SEC / 10, NULL, 0, out);
+        for (int p = 0; p < 2; p++) {
+            const ct_track *on = track_at(out, n, cx[p], 80);
+            if (found[p] < 0 && on) {
+                found[p] = k;
+                id[p] = on->id;
+            } else if (found[p] >= 0) {
+                ck_assert_msg(on != NULL && on->id == id[p], "frame %d: person %d lost its track",
+                              k + 1, p);
+            }
+        }
+    }
+    for (int p = 0; p < 2; p++)
+        ck_assert_msg(found[p] >= 0 && found[p] < 10, "person %d first tracked at frame %d", p,
+                      found[p] + 1);
+    ck_assert_uint_ne(id[0], id[1]);
+    ct_tracker_destroy(t);
+}
+END_TEST
+
 static Suite *pixels_suite(void)
 {
     Suite *s = suite_create("pixels");
@@ -1252,6 +1298,7 @@ static Suite *pixels_suite(void)
     tcase_add_loop_test(tc, an_object_put_down_stops_being_a_candidate, 0, 2);
     tcase_add_loop_test(tc, people_side_by_side_are_split, 0, 2);
     tcase_add_test(tc, a_pair_with_one_head_is_a_doubtful_pedestrian);
+    tcase_add_test(tc, walkers_of_the_first_frame_are_found_live);
     suite_add_tcase(s, tc);
     return s;
 }

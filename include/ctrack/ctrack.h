@@ -533,7 +533,9 @@ typedef struct ct_candidate {
 
 /* Copies the candidates of the last step, like ct_tracker_get_tracks() (in
  * the order found): the blobs, and boxes the people's size draws for someone
- * partly hidden behind the person a blob is (each over that blob's box).
+ * partly hidden behind the person a blob is (each over that blob's box);
+ * in the background model's first 1.2 s, after those, the blobs of what
+ * changed since the frame before that no blob of the model's covers.
  * With source CT_SOURCE_DETECTIONS there are none, unless
  * verify_detections is set and the frame had pixels: then one per detection
  * given, in order, with the box as given. */

@@ -57,6 +57,16 @@ constexpr int kChromaForeground = 24;
 // (docs/tuning.md, "The scene's noise, contrast and black level").
 CT_TUNABLE(kLumaNoise, "CTRACK_LUMA_NOISE", 3.5);
 constexpr double kChromaNoise = 4.0, kShadowNoise = 1.0;
+// For the first kMotionS seconds the model holds the people of its first
+// frames, and the frame's change from the frame before shows where people
+// are (motion()): a change above kMotionFloor grey levels, and above
+// kMotionOverMedian times the median change (the sensor's noise: most
+// pixels are still background); docs/tuning.md, "The first second".
+CT_TUNABLE(kMotionS, "CTRACK_MOTION_TIME", 1.2);
+CT_TUNABLE(kMotionFloor, "CTRACK_MOTION_FLOOR", 15);
+CT_TUNABLE(kMotionOverMedian, "CTRACK_MOTION_OVER_MEDIAN", 6);
+// The median is taken over every kMotionGrid-th pixel.
+constexpr size_t kMotionGrid = 7;
 
 // The scene's contrast and black level (NoiseLevel). V's floor is kVMin at
 // a contrast of kContrastRef grey levels (the model's median absolute
@@ -182,7 +192,7 @@ size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
-           luma_.capacity() + old_luma_.capacity() +
+           luma_.capacity() + old_luma_.capacity() + motion_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
            line_dc_.capacity() + noise_samples_.memory_bytes() +
@@ -512,11 +522,37 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
                      profile_shifted(rows_.data(), old_rows_.data(), h_, kReach));
     if (camera_moved_)
         moved_us_ = t_us;
+    find_motion(t_us);
     if (sample)
         noise_.end(noise_samples_, u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
     if (u.rescale)
         release_resampled();
+}
+
+void Background::find_motion(int64_t t_us)
+{
+    motion_ready_ = have_last_ && !camera_moved_ && age_s(t_us) < kMotionS;
+    if (!motion_ready_) {
+        if (!motion_.empty())
+            Vec<uint8_t>(motion_.get_allocator()).swap(motion_);
+        return;
+    }
+    const size_t n = (size_t)w_ * h_;
+    uint32_t hist[256] = {};
+    uint32_t total = 0;
+    for (size_t i = 0; i < n; i += kMotionGrid, total++)
+        hist[std::abs((int)luma_[i] - (int)old_luma_[i])]++;
+    int median = 0;
+    for (uint32_t sum = 0; median < 255; median++) {
+        sum += hist[median];
+        if (2 * sum >= total)
+            break;
+    }
+    const int level = (int)std::lround(std::max((double)kMotionFloor, kMotionOverMedian * median));
+    motion_.resize(n);
+    for (size_t i = 0; i < n; i++)
+        motion_[i] = std::abs((int)luma_[i] - (int)old_luma_[i]) > level ? 255 : 0;
 }
 
 namespace {

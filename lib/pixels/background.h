@@ -70,6 +70,11 @@ public:
     void rollback();
 
     const uint8_t *mask() const { return mask_.data(); }
+    // While the model still holds the people of its first frames (its
+    // first seconds, the camera still and the frame before at this scale
+    // kept for live()): the pixels (255) where the frame changed from the
+    // frame before by more than the sensor's noise. Null otherwise.
+    const uint8_t *motion() const { return motion_ready_ ? motion_.data() : nullptr; }
 
     // Edge strength along the outline of the blob `blob` (a working-size
     // mask, non-zero inside) within r: in the frame (`frame`) and in the
@@ -130,6 +135,8 @@ private:
     // Reads the frame's luma divided by gain from now on (gain_lut_).
     void set_gain(double gain);
     void swap_models();
+    // motion() for this frame, or its buffer freed once the time is past.
+    void find_motion(int64_t t_us);
 
     static Dsp make_dsp();
     Dsp dsp_; // the row kernels for this CPU, chosen when the tracker is made
@@ -165,6 +172,8 @@ private:
     // this frame's V floor.
     Vec<uint8_t> luma_, old_luma_;
     bool keep_luma_ = false, have_last_ = false;
+    bool motion_ready_ = false;
+    Vec<uint8_t> motion_;
     int live_level_ = 0;
     // The luma's column and row sums of this frame and the one before
     // (swapped with the model), and what they say of the camera.

@@ -130,7 +130,7 @@ struct BlobFinder::Impl {
     Rect area{0, 0, 0, 0};
     Closing closing;
     OuterRegions regions;
-    Vec<Rect> blobs;
+    Vec<Rect> blobs, largest; // largest: outer_blobs()' scratch
     Vec<int> columns, centres, tops, smooth, order, heads;
     Vec<float> votes;
     const uint8_t *at(int x, int y) const { return &clean[(size_t)y * w + x]; }
@@ -166,7 +166,8 @@ size_t BlobFinder::memory_bytes() const
 {
     const Impl &m = *impl_;
     return m.clean.capacity() + m.closing.memory_bytes() + m.regions.memory_bytes() +
-           m.blobs.capacity() * sizeof(Rect) + m.votes.capacity() * sizeof(float) +
+           (m.blobs.capacity() + m.largest.capacity()) * sizeof(Rect) +
+           m.votes.capacity() * sizeof(float) +
            (m.columns.capacity() + m.centres.capacity() + m.tops.capacity() +
             m.smooth.capacity() + m.order.capacity() + m.heads.capacity()) *
                sizeof(int);
@@ -451,11 +452,21 @@ bool BlobFinder::outer_blobs()
     // fragments looks at every pair, and a flickering mask could make
     // thousands.
     if (b.size() > (size_t)kMaxBlobs) {
-        auto area = [](const Rect &r) { return (long)(r.x1 - r.x0) * (r.y1 - r.y0); };
-        std::stable_sort(b.begin(), b.end(),
-                         [&](const Rect &p, const Rect &q) { return area(p) > area(q); });
+        auto area = [&](int k) { return (long)(b[k].x1 - b[k].x0) * (b[k].y1 - b[k].y0); };
+        // (std::sort on the indices, not stable_sort, which takes a buffer
+        // from the heap.)
+        Vec<int> &order = m.order;
+        order.resize(b.size());
+        for (size_t k = 0; k < b.size(); k++)
+            order[k] = (int)k;
+        std::sort(order.begin(), order.end(), [&](int p, int q) {
+            return area(p) > area(q) || (area(p) == area(q) && p < q);
+        });
         dropped_ = (int)b.size() - kMaxBlobs;
-        b.resize(kMaxBlobs);
+        m.largest.clear();
+        for (int k = 0; k < kMaxBlobs; k++)
+            m.largest.push_back(b[(size_t)order[(size_t)k]]);
+        b.swap(m.largest);
     }
     return true;
 }

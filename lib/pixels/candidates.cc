@@ -19,6 +19,10 @@ constexpr double kGhostEdges = 2.0;
 // The narrowest blob at the image's left or right edge that is voted on, in
 // working pixels (docs/tuning.md, "A sliver at the edge").
 constexpr int kEdgeMinWidth = 3;
+// A blob of what moved (Background::motion()) is no candidate where more
+// than this share of it, or of the model's blob, is the other's
+// (docs/tuning.md, "The first second").
+CT_TUNABLE(kMovingOverlap, "CTRACK_MOVING_OVERLAP", 0.5);
 
 // The working scale from the people's size (docs/notes/pixels.md, "The
 // working scale"): the coarsest of 1, 2 and 4 at which a typical person
@@ -79,7 +83,8 @@ size_t PixelCandidates::memory_bytes() const
            blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
            dets_.capacity() * sizeof(ct_detection) + whole_.capacity() + behind_.capacity() +
-           rects_.capacity() * sizeof(Rect);
+           moving_.capacity() + (rects_.capacity() + moving_rects_.capacity()) * sizeof(Rect) +
+           (moving_blobs_ ? moving_blobs_->memory_bytes() : 0);
 }
 
 void PixelCandidates::update_background(int64_t t_us, const Planes &img,
@@ -119,14 +124,14 @@ static bool person_sized(const ct_candidate &c, const PersonSize &size)
 }
 
 void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tracks,
-                           int test, const PersonSize &size, Counters &counters,
-                           Vec<ct_candidate> &out)
+                           int test, float start_score, const PersonSize &size,
+                           Counters &counters, Vec<ct_candidate> &out)
 {
     dets_.clear();
     if (img.empty())
         return;
     Stopwatch sw;
-    background_.keep_luma(true); // for live()
+    background_.keep_luma(true); // for live() and motion()
     // The finer scales are for the contour template, which needs a
     // person's rows; size and aspect alone need none, and would only meet
     // more fragments (docs/notes/pixels.md, "The working scale").
@@ -144,6 +149,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     out.clear();
     whole_.clear();
     behind_.clear();
+    moving_.clear();
     rects_.clear();
     bool dropped = false; // the last blob, a ghost or an object put down
     for (size_t i = 0; i < blob_rects_.size(); i++) {
@@ -163,40 +169,94 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
                 continue;
             }
         }
-        float regions;
-        ct_candidate c = classifier_.candidate(
-            blobs_.cleaned(), background_.width(), background_.height(), r, (float)(r.x0 * s),
-            (float)(r.y0 * s), (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s),
-            blobs_.headed_part(i), &regions);
-        // A blob that a shape of two walkers fits better than every
-        // silhouette, but that shows one head on its top edge, is one
-        // person far more often than two: a pedestrian, the regions' margin
-        // over an even vote halved for the doubt. At most 0.75, under
-        // candidate_min_score's default: it continues a track and starts
-        // none, as when the pair shapes turned it down (docs/tuning.md,
-        // "Shapes a person is not", has the blobs it lifts).
-        if (regions > 0.5f && blobs_.head_count(r) == 1)
-            c.score = 0.5f + 0.5f * (regions - 0.5f);
-        if (test == CT_PEDESTRIAN_SIZE)
-            c.score = person_sized(c, size) ? 1.0f : 0.0f;
-        // A sliver at the image's left or right edge, fewer than
-        // kEdgeMinWidth working pixels wide, has no outline to vote on (its
-        // side is the image's border): no score, so it neither starts nor
-        // continues a track. A background column that stays foreground
-        // there started one (docs/tuning.md, "A sliver at the edge").
-        if ((r.x0 <= 0 || r.x1 >= background_.width()) && r.x1 - r.x0 < kEdgeMinWidth)
-            c.score = 0;
-        out.push_back(c);
-        dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
-        whole_.push_back(blobs_.whole(i));
-        behind_.push_back(blobs_.behind_part(i));
-        rects_.push_back(r);
+        keep(score_blob(blobs_, i, r, test, size), r, blobs_.whole(i), blobs_.behind_part(i),
+             false, out);
     }
+    if (background_.motion())
+        add_moving(test, start_score, size, out);
+    else
+        moving_blobs_.reset();
     counters.stage_ns[CT_STAGE_CLASSIFY] += sw.lap();
+}
+
+ct_candidate PixelCandidates::score_blob(BlobFinder &blobs, size_t i, const Rect &r, int test,
+                                         const PersonSize &size)
+{
+    const int s = background_.scale(), w = background_.width();
+    float regions;
+    ct_candidate c = classifier_.candidate(
+        blobs.cleaned(), w, background_.height(), r, (float)(r.x0 * s), (float)(r.y0 * s),
+        (float)((r.x1 - r.x0) * s), (float)((r.y1 - r.y0) * s), blobs.headed_part(i), &regions);
+    // A blob that a shape of two walkers fits better than every
+    // silhouette, but that shows one head on its top edge, is one
+    // person far more often than two: a pedestrian, the regions' margin
+    // over an even vote halved for the doubt. At most 0.75, under
+    // candidate_min_score's default: it continues a track and starts
+    // none, as when the pair shapes turned it down (docs/tuning.md,
+    // "Shapes a person is not", has the blobs it lifts).
+    if (regions > 0.5f && blobs.head_count(r) == 1)
+        c.score = 0.5f + 0.5f * (regions - 0.5f);
+    if (test == CT_PEDESTRIAN_SIZE)
+        c.score = person_sized(c, size) ? 1.0f : 0.0f;
+    // A sliver at the image's left or right edge, fewer than
+    // kEdgeMinWidth working pixels wide, has no outline to vote on (its
+    // side is the image's border): no score, so it neither starts nor
+    // continues a track. A background column that stays foreground
+    // there started one (docs/tuning.md, "A sliver at the edge").
+    if ((r.x0 <= 0 || r.x1 >= w) && r.x1 - r.x0 < kEdgeMinWidth)
+        c.score = 0;
+    return c;
+}
+
+void PixelCandidates::keep(const ct_candidate &c, const Rect &r, bool whole, bool behind,
+                           bool moving, Vec<ct_candidate> &out)
+{
+    out.push_back(c);
+    dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
+    whole_.push_back(whole);
+    behind_.push_back(behind);
+    moving_.push_back(moving);
+    rects_.push_back(r);
+}
+
+void PixelCandidates::add_moving(int test, float start_score, const PersonSize &size,
+                                 Vec<ct_candidate> &out)
+{
+    // While the model learns its first frames, a person who was in them
+    // is in pieces in its mask, or in none (docs/notes/pixels.md,
+    // "Start"); what changed since the frame before holds them whole
+    // enough, where they walk. Their blobs come from a finder of their
+    // own: the model's mask stays the one fit() and live() read.
+    if (!moving_blobs_)
+        moving_blobs_ = make_owned<BlobFinder>();
+    BlobFinder &blobs = *moving_blobs_;
+    const int s = background_.scale();
+    blobs.find(background_.motion(), background_.width(), background_.height(), s,
+               predicted_.data(), (int)predicted_.size(), size, classifier_, moving_rects_);
+    const size_t from_model = out.size();
+    for (size_t i = 0; i < moving_rects_.size(); i++) {
+        const Rect &r = moving_rects_[i];
+        if (blobs.behind_part(i))
+            continue;
+        // Where the model's blob could start a track, it stands for the
+        // person; both would start two.
+        const Box b{(double)r.x0 * s, (double)r.y0 * s, (double)(r.x1 - r.x0) * s,
+                    (double)(r.y1 - r.y0) * s};
+        bool covered = false;
+        for (size_t j = 0; j < from_model && !covered; j++)
+            covered = out[j].score >= start_score &&
+                      overlap_share(b, Box{out[j].left, out[j].top, out[j].width,
+                                           out[j].height}) > kMovingOverlap;
+        if (!covered)
+            keep(score_blob(blobs, i, r, test, size), r, false, false, true, out);
+    }
 }
 
 bool PixelCandidates::live(size_t i) const
 {
+    // A blob of what moved changed by its making.
+    if (i < moving_.size() && moving_[i])
+        return true;
     return i < rects_.size() && background_.live(blobs_.cleaned(), rects_[i]);
 }
 

@@ -28,9 +28,14 @@ public:
     // predicted to this frame: confirmed tracks that have moved freeze the
     // background under them, and tracks inside a blob split it. The time
     // of each stage, and the blobs dropped and masks flooded, are counted.
-    // `test` is a ct_pedestrian_test: what scores each candidate.
+    // `test` is a ct_pedestrian_test: what scores each candidate. While the
+    // model holds the people of its first frames (Background::motion()),
+    // the blobs of what changed since the frame before are candidates too,
+    // where no blob of the model's that could start a track (scoring
+    // `start_score`) covers them.
     void find(int64_t t_us, const Planes &img, const Vec<Track> &tracks, int test,
-              const PersonSize &size, Counters &counters, Vec<ct_candidate> &out);
+              float start_score, const PersonSize &size, Counters &counters,
+              Vec<ct_candidate> &out);
     // The vote on the foreground inside each of the n detections: one
     // candidate each, in order (into `out`), and dets() the detections
     // with the score of those the vote rejects multiplied by the vote's.
@@ -93,15 +98,28 @@ private:
     // Whether blob r (working pixels) is an object put down: a track the
     // engine took for one (Track::object) stands on it.
     bool put_down(const Vec<Track> &tracks, const Rect &r) const;
+    // Blob i of `blobs` (box r, working pixels) as the candidate `test`
+    // scores.
+    ct_candidate score_blob(BlobFinder &blobs, size_t i, const Rect &r, int test,
+                            const PersonSize &size);
+    // The candidates of Background::motion() (find()) appended to `out`.
+    void add_moving(int test, float start_score, const PersonSize &size,
+                    Vec<ct_candidate> &out);
+    // Appends candidate c of blob r, a whole blob, someone behind or a
+    // blob of what moved, to this step's lists.
+    void keep(const ct_candidate &c, const Rect &r, bool whole, bool behind, bool moving,
+              Vec<ct_candidate> &out);
 
     Background background_;
     Owned<Background> kept_; // keep_background()'s copy
     BlobFinder blobs_;
+    Owned<BlobFinder> moving_blobs_; // add_moving()'s, while there is motion()
+    Vec<Rect> moving_rects_;
     Classifier classifier_;
     bool have_mask_ = false; // this step
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
-    Vec<char> whole_, behind_;
+    Vec<char> whole_, behind_, moving_;
     Vec<Rect> rects_; // this step's candidates' blobs, working pixels
 };
 

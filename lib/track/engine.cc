@@ -478,8 +478,9 @@ bool Engine::find_candidates(int64_t scene_us, const Planes &img, const ct_detec
 {
     pixels_.clear();
     if (cfg_.source == CT_SOURCE_PIXELS) {
-        pixels_.find(scene_us, img, state_.tracks, cfg_.pedestrian_test, state_.learnt.size,
-                     state_.counters, state_.candidates);
+        pixels_.find(scene_us, img, state_.tracks, cfg_.pedestrian_test,
+                     cfg_.candidate_min_score, state_.learnt.size, state_.counters,
+                     state_.candidates);
         *dets = pixels_.dets().data();
         *n = pixels_.dets().size();
         return true;

@@ -27,18 +27,30 @@ double at_height(double per_height, const ct_detection &d)
     return per_height * std::max<double>(d.height, kMinSide);
 }
 
-} // namespace
-
-double iou(const Box &a, const Box &b)
+double intersection(const Box &a, const Box &b)
 {
     double x0 = std::max(a.left, b.left), y0 = std::max(a.top, b.top);
     double x1 = std::min(a.left + a.width, b.left + b.width);
     double y1 = std::min(a.top + a.height, b.top + b.height);
-    if (x1 <= x0 || y1 <= y0)
+    return x1 <= x0 || y1 <= y0 ? 0 : (x1 - x0) * (y1 - y0);
+}
+
+} // namespace
+
+double iou(const Box &a, const Box &b)
+{
+    const double inter = intersection(a, b);
+    if (!(inter > 0))
         return 0;
-    double inter = (x1 - x0) * (y1 - y0);
     double uni = a.width * a.height + b.width * b.height - inter;
     return uni > 0 ? inter / uni : 0;
+}
+
+double overlap_share(const Box &a, const Box &b)
+{
+    const double inter = intersection(a, b);
+    const double smaller = std::min(a.width * a.height, b.width * b.height);
+    return inter > 0 && smaller > 0 ? inter / smaller : 0;
 }
 
 double buffered_iou(const Box &a, const Box &b, double buffer)

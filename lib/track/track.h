@@ -19,6 +19,8 @@ struct Box {
 };
 
 double iou(const Box &a, const Box &b);
+// The share of the smaller of a and b that the other covers.
+double overlap_share(const Box &a, const Box &b);
 // The IoU of a and b each widened by `buffer` of its own width and height
 // on every side (Yang et al.'s buffered IoU, WACV 2023): an offset between
 // the centres counts 1 + 2 buffer times less against the boxes' sizes, a

@@ -204,8 +204,9 @@ def test_primed_on_real_frames_as_ct_track():
     """TUD-Campus from the pixels alone, primed on its first PRIME_SECONDS
     (ct_tracker_prime(), a look-ahead): the binding gives exactly what
     ct-track --prime writes reading the same frames from standard input,
-    and both find more of the people of its first second than a tracker fed
-    live; fed live, it gives what ct-track gives by default."""
+    and both find at least as many of the people of its first second as a
+    tracker fed live, which finds two thirds as many or more; fed live, it
+    gives what ct-track gives by default."""
     n, fps, w, h = seqinfo("TUD-Campus")
     video = os.path.join(DATA, "TUD-Campus", "video.mp4")
     raw = subprocess.run(["ffmpeg", "-v", "error", "-i", video, "-f", "rawvideo",
@@ -234,7 +235,10 @@ def test_primed_on_real_frames_as_ct_track():
 
     def first_second(lines):
         return sum(int(line.split(",")[0]) <= fps for line in lines)
-    assert first_second(primed) >= 2 * first_second(live) > 0
+    # Live, what changed since the frame before stands in for the background
+    # of the first second (docs/tuning.md, "The first second").
+    assert first_second(primed) >= first_second(live)
+    assert 3 * first_second(live) >= 2 * first_second(primed) > 0
 
 
 def test_bad_priming_raises_and_changes_nothing():
