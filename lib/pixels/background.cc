@@ -543,12 +543,7 @@ void Background::find_motion(int64_t t_us)
     uint32_t total = 0;
     for (size_t i = 0; i < n; i += kMotionGrid, total++)
         hist[std::abs((int)luma_[i] - (int)old_luma_[i])]++;
-    int median = 0;
-    for (uint32_t sum = 0; median < 255; median++) {
-        sum += hist[median];
-        if (2 * sum >= total)
-            break;
-    }
+    const double median = median_of(hist, total);
     const int level = (int)std::lround(std::max((double)kMotionFloor, kMotionOverMedian * median));
     motion_.resize(n);
     for (size_t i = 0; i < n; i++)

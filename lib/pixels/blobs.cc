@@ -350,14 +350,12 @@ int BlobFinder::second_head(const Vec<int> &top, int h1, int gap, double dip)
     return h2;
 }
 
-int BlobFinder::between_heads(const Rect &r, Classifier &cls)
+int BlobFinder::between_heads(const Rect &r, const Vec<int> &top, int h1, Classifier &cls)
 {
     const int bh = r.y1 - r.y0;
-    const Vec<int> &top = top_edge(r);
     // The highest column is one head; the other is the highest column at
     // least kMinCentreGap heights away with a dip of kHeadDip heights below
     // both between them.
-    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
     const int h2 = second_head(top, h1, (int)std::ceil(kMinCentreGap * bh), kHeadDip * bh);
     if (h2 < 0)
         return -1;
@@ -370,7 +368,8 @@ int BlobFinder::between_heads(const Rect &r, Classifier &cls)
     return -1;
 }
 
-void BlobFinder::behind(const Rect &r, int s, const PersonSize &size, Vec<Rect> &out)
+void BlobFinder::behind(const Rect &r, const Vec<int> &top, int h1, int s,
+                        const PersonSize &size, Vec<Rect> &out)
 {
     // Where a person's height grows about as fast as their feet go down
     // the image (the line's slope near 1), every head sits on about one
@@ -379,8 +378,6 @@ void BlobFinder::behind(const Rect &r, int s, const PersonSize &size, Vec<Rect> 
     if (!size.known() || std::fabs(1 - size.slope()) < kMinHeadSlope)
         return;
     const int bh = r.y1 - r.y0;
-    const Vec<int> &top = top_edge(r);
-    const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
     const int h2 = second_head(top, h1, (int)std::ceil(kBehindGap * bh), kHeadDip * bh);
     if (h2 < 0)
         return;
@@ -580,11 +577,14 @@ void BlobFinder::split(const Rect &r, int s, const Rect *predicted, int n_predic
     centres.resize(kept);
     int head_cut = -1;
     if (parts < 2 && centres.size() < 2) {
-        head_cut = between_heads(r, cls);
+        // Its top edge and highest column, for both heads' tests.
+        const Vec<int> &top = top_edge(r);
+        const int h1 = (int)(std::min_element(top.begin(), top.end()) - top.begin());
+        head_cut = between_heads(r, top, h1, cls);
         if (head_cut < 0) {
             out.push_back(r);
             whole_.push_back(kWhole);
-            behind(r, s, size, out);
+            behind(r, top, h1, s, size, out);
             return;
         }
     }

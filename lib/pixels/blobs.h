@@ -81,7 +81,8 @@ private:
     // Where to cut r between two people side by side, from two heads on its
     // top edge, when the contour template takes both parts for pedestrians
     // and scores them above the whole: the column, or -1.
-    int between_heads(const Rect &r, Classifier &cls);
+    // `top` is r's top edge (top_edge()) and h1 its highest column.
+    int between_heads(const Rect &r, const Vec<int> &top, int h1, Classifier &cls);
     // The column of the highest point of `top` at least `gap` columns from
     // column h1 (its highest), with the edge between them dipping `dip`
     // rows below both; -1 if none.
@@ -92,7 +93,9 @@ private:
     // both), the person the people's size puts there, when their feet are
     // well above the blob's bottom. Their box, from that head to those
     // feet and as wide as a person there, goes into `out` beside r.
-    void behind(const Rect &r, int scale, const PersonSize &size, Vec<Rect> &out);
+    // `top` and h1 as for between_heads().
+    void behind(const Rect &r, const Vec<int> &top, int h1, int scale, const PersonSize &size,
+                Vec<Rect> &out);
     // r's top edge: each column's first foreground row (r.y1 if none), in
     // Impl::tops.
     Vec<int> &top_edge(const Rect &r);

@@ -82,8 +82,8 @@ size_t PixelCandidates::memory_bytes() const
     return background_.memory_bytes() + (kept_ ? kept_->memory_bytes() : 0) +
            blobs_.memory_bytes() + classifier_.memory_bytes() +
            (frozen_.capacity() + predicted_.capacity() + blob_rects_.capacity()) * sizeof(Rect) +
-           dets_.capacity() * sizeof(ct_detection) + whole_.capacity() + behind_.capacity() +
-           moving_.capacity() + (rects_.capacity() + moving_rects_.capacity()) * sizeof(Rect) +
+           dets_.capacity() * sizeof(ct_detection) + kind_.capacity() +
+           (rects_.capacity() + moving_rects_.capacity()) * sizeof(Rect) +
            (moving_blobs_ ? moving_blobs_->memory_bytes() : 0);
 }
 
@@ -147,9 +147,7 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
     counters.masks_flooded += blobs_.flooded();
     counters.stage_ns[CT_STAGE_BLOBS] += sw.lap();
     out.clear();
-    whole_.clear();
-    behind_.clear();
-    moving_.clear();
+    kind_.clear();
     rects_.clear();
     bool dropped = false; // the last blob, a ghost or an object put down
     for (size_t i = 0; i < blob_rects_.size(); i++) {
@@ -169,8 +167,8 @@ void PixelCandidates::find(int64_t t_us, const Planes &img, const Vec<Track> &tr
                 continue;
             }
         }
-        keep(score_blob(blobs_, i, r, test, size), r, blobs_.whole(i), blobs_.behind_part(i),
-             false, out);
+        keep(score_blob(blobs_, i, r, test, size), r,
+             blobs_.behind_part(i) ? kBehind : blobs_.whole(i) ? kWhole : kPart, out);
     }
     if (background_.motion())
         add_moving(test, start_score, size, out);
@@ -208,14 +206,12 @@ ct_candidate PixelCandidates::score_blob(BlobFinder &blobs, size_t i, const Rect
     return c;
 }
 
-void PixelCandidates::keep(const ct_candidate &c, const Rect &r, bool whole, bool behind,
-                           bool moving, Vec<ct_candidate> &out)
+void PixelCandidates::keep(const ct_candidate &c, const Rect &r, char kind,
+                           Vec<ct_candidate> &out)
 {
     out.push_back(c);
     dets_.push_back(ct_detection{c.left, c.top, c.width, c.height, c.score, 0});
-    whole_.push_back(whole);
-    behind_.push_back(behind);
-    moving_.push_back(moving);
+    kind_.push_back(kind);
     rects_.push_back(r);
 }
 
@@ -248,14 +244,14 @@ void PixelCandidates::add_moving(int test, float start_score, const PersonSize &
                       overlap_share(b, Box{out[j].left, out[j].top, out[j].width,
                                            out[j].height}) > kMovingOverlap;
         if (!covered)
-            keep(score_blob(blobs, i, r, test, size), r, false, false, true, out);
+            keep(score_blob(blobs, i, r, test, size), r, kMoving, out);
     }
 }
 
 bool PixelCandidates::live(size_t i) const
 {
     // A blob of what moved changed by its making.
-    if (i < moving_.size() && moving_[i])
+    if (i < kind_.size() && kind_[i] == kMoving)
         return true;
     return i < rects_.size() && background_.live(blobs_.cleaned(), rects_[i]);
 }

@@ -57,10 +57,10 @@ public:
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part
     // of a split one tells nothing of a person's width.
-    bool whole(size_t i) const { return whole_[i] != 0; }
+    bool whole(size_t i) const { return kind_[i] == kWhole; }
     // Whether candidate i is someone behind the person a blob is
     // (BlobFinder::behind_part()).
-    bool behind(size_t i) const { return i < behind_.size() && behind_[i] != 0; }
+    bool behind(size_t i) const { return i < kind_.size() && kind_[i] == kBehind; }
     // Whether this step's candidate i (of find()) moved inside since the
     // frame before (Background::live(); computed when asked).
     bool live(size_t i) const;
@@ -105,10 +105,11 @@ private:
     // The candidates of Background::motion() (find()) appended to `out`.
     void add_moving(int test, float start_score, const PersonSize &size,
                     Vec<ct_candidate> &out);
-    // Appends candidate c of blob r, a whole blob, someone behind or a
-    // blob of what moved, to this step's lists.
-    void keep(const ct_candidate &c, const Rect &r, bool whole, bool behind, bool moving,
-              Vec<ct_candidate> &out);
+    // What a candidate of find() is: a part of a split blob, a whole blob,
+    // a box for someone behind a blob's person, or a blob of what moved.
+    enum : char { kPart, kWhole, kBehind, kMoving };
+    // Appends candidate c of blob r, of that kind, to this step's lists.
+    void keep(const ct_candidate &c, const Rect &r, char kind, Vec<ct_candidate> &out);
 
     Background background_;
     Owned<Background> kept_; // keep_background()'s copy
@@ -119,7 +120,7 @@ private:
     bool have_mask_ = false; // this step
     Vec<Rect> frozen_, predicted_, blob_rects_;
     Vec<ct_detection> dets_;
-    Vec<char> whole_, behind_, moving_;
+    Vec<char> kind_; // this step's candidates' kinds (keep())
     Vec<Rect> rects_; // this step's candidates' blobs, working pixels
 };
 
