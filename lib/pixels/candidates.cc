@@ -349,6 +349,23 @@ const uint8_t *PixelCandidates::foreground(int *w, int *h) const
     return have_mask_ ? blobs_.cleaned() : nullptr;
 }
 
+double PixelCandidates::foreground_share(const Box &b) const
+{
+    if (!have_mask_)
+        return -1;
+    const int s = background_.scale(), w = background_.width(), h = background_.height();
+    const Rect r = to_working(b, s);
+    const int x0 = std::max(0, r.x0), x1 = std::min(w, r.x1);
+    if (x1 <= x0)
+        return -1;
+    long set = 0, area = 0;
+    for (int y = std::max(0, r.y0); y < std::min(h, r.y1); y++) {
+        set += count_nonzero(blobs_.cleaned() + (size_t)y * w + x0, x1 - x0);
+        area += x1 - x0;
+    }
+    return area > 0 ? (double)set / (double)area : -1;
+}
+
 void PixelCandidates::barycenter(const Box &b, float *x, float *y) const
 {
     *x = (float)(b.left + b.width / 2);

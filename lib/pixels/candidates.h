@@ -64,6 +64,9 @@ public:
     // Whether this step's candidate i (of find()) moved inside since the
     // frame before (Background::live(); computed when asked).
     bool live(size_t i) const;
+    // The share of box b (frame pixels) that this step's foreground fills,
+    // or -1 when the step has no mask.
+    double foreground_share(const Box &b) const;
     // The centroid of this step's foreground inside b, or its centre.
     void barycenter(const Box &b, float *x, float *y) const;
     // This step's cleaned foreground mask at the background model's scale

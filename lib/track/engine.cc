@@ -14,6 +14,14 @@ namespace {
 // image: the detector stops seeing a person cut by the border, and the part
 // left in the window does not hold them.
 constexpr double kMinInside = 0.9;
+// Nor when the background model, where it shows silhouettes clearly, finds
+// less than this share of the window foreground: the person has gone (out
+// of the image, or where no blob is), and what the window holds is the
+// background, which the window's colours can match as well as they matched
+// the person (0.8 to 0.9 on TUD-Campus's pavement). A person who stops
+// stays foreground: the model is frozen under a confirmed track that moved
+// (docs/tuning.md, "Mean shift on the background").
+CT_TUNABLE(kFollowForeground, "CTRACK_FOLLOW_FOREGROUND", 0.1);
 constexpr double kMinSide = 1.0;
 // A tentative track meets a detection that misses its IoU gate when the
 // detection's centre lies within this many standard deviations of where
@@ -151,6 +159,10 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
             continue;
         ms_.scale(img, t.model, ms_params_, &t.ms);
         if (t.ms.rho < min_rho_)
+            continue;
+        if (silhouettes_ && kFollowForeground > 0 &&
+            pixels_.foreground_share(Box{t.ms.cx - t.ms.width / 2, t.ms.cy - t.ms.height / 2,
+                                         t.ms.width, t.ms.height}) < kFollowForeground)
             continue;
         t.follow(cfg_.detection_noise);
     }
@@ -631,7 +643,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     ns[CT_STAGE_PREDICT] += sw.lap();
     if (find_candidates(time.scene_us, img, &dets, &n))
         sw.lap(); // its stages counted themselves
-    fit_boxes_ = cfg_.refine_boxes && pixels_.silhouettes_clear(time.scene_us);
+    silhouettes_ = pixels_.silhouettes_clear(time.scene_us);
+    fit_boxes_ = cfg_.refine_boxes && silhouettes_;
     if (pixels) {
         refine(img);
         ns[CT_STAGE_MEAN_SHIFT] += sw.lap();

@@ -244,6 +244,7 @@ private:
     float high_ = 0, start_ = 0;
     bool appearance_ = false; // this step
     bool fit_boxes_ = false;  // this step: the reported boxes are fitted
+    bool silhouettes_ = false; // this step: the mask shows silhouettes clearly
     TemplateBank bank_;
     PixelCandidates pixels_;
     // Counting runs last in a step: it changes nothing unless the step is
