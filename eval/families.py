@@ -8,8 +8,10 @@ pattern or one contrast.
                 [--each] [--detections] [-p NAME=VALUE ...]
 
 FAMILY is one of cteval.families.FAMILIES ("half size" needs its quotes),
-"conditions": the frames as they are and make eval's camera conditions, or
-"frame rate": a half and a third of the frame rate, from each offset. A
+"conditions": the frames as they are and make eval's camera conditions,
+"frame rate": a half and a third of the frame rate, from each offset, or
+"noise seeds": sensor noise of three strengths, ten seeds each (not one of
+make eval's: one seed is one draw, and TUD-Campus's swing by 20 MOTA). A
 tuning build (meson -Dtuning=true) reads CTRACK_NAME from the environment.
 Pixels only, or with --detections each sequence's public detections too
 (moved with the frames); -p passes ct-track a parameter (-p
@@ -26,13 +28,14 @@ import tempfile
 import numpy as np
 
 from cteval.data import has_video, sequences
-from cteval.families import CONDITIONS_FAMILY, FAMILIES, RATE_FAMILY, run_all
+from cteval.families import CONDITIONS_FAMILY, FAMILIES, NOISE_SEEDS_FAMILY, RATE_FAMILY, run_all
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
-    ap.add_argument("family", choices=sorted(FAMILIES) + ["conditions", "frame rate"])
+    ap.add_argument("family",
+                    choices=sorted(FAMILIES) + ["conditions", "frame rate", "noise seeds"])
     ap.add_argument("sweep", help="CTRACK_NAME=V1,V2,...@SHIPPED")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--each", action="store_true", help="also print every variant's score")
@@ -45,7 +48,8 @@ def main():
     if shipped is not None and shipped not in values:
         values.append(shipped)
     seqs = [s for s in sequences() if has_video(s)]
-    variants = dict(FAMILIES, conditions=CONDITIONS_FAMILY, **{"frame rate": RATE_FAMILY})[a.family]
+    variants = dict(FAMILIES, conditions=CONDITIONS_FAMILY,
+                    **{"frame rate": RATE_FAMILY, "noise seeds": NOISE_SEEDS_FAMILY})[a.family]
     keys = [(seq, label, v) for v in values for seq in seqs for label, _, _ in variants]
     jobs = [dict(build=a.build, seq=seq, vf=vf, move=move, env={name: v},
                  detections=a.detections, params=a.params)

@@ -180,9 +180,10 @@ typedef struct ct_config {
      * Default 0.7; range (0, 1). */
     float mean_shift_min_similarity;
     /* Seconds mean shift may carry a track without a detection. Where
-     * the background is read (source CT_SOURCE_PIXELS, or refine_boxes)
-     * and has learnt for a second with the camera still, a window less
-     * than a tenth foreground does not carry it: the person has gone.
+     * a background is read (source CT_SOURCE_PIXELS, verify_detections
+     * or refine_boxes) and has learnt for a second with the camera still,
+     * a window less than a tenth foreground does not carry it: the person
+     * has gone.
      * Default 1; range [0, 3600]. */
     double mean_shift_max_time;
     /* Learning rate of the colour model (the paper's eq. 9).

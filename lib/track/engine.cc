@@ -160,10 +160,12 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         ms_.scale(img, t.model, ms_params_, &t.ms);
         if (t.ms.rho < min_rho_)
             continue;
-        if (silhouettes_ && kFollowForeground > 0 &&
-            pixels_.foreground_share(Box{t.ms.cx - t.ms.width / 2, t.ms.cy - t.ms.height / 2,
-                                         t.ms.width, t.ms.height}) < kFollowForeground)
-            continue;
+        if (silhouettes_ && kFollowForeground > 0) {
+            const double share = pixels_.foreground_share(
+                Box{t.ms.cx - t.ms.width / 2, t.ms.cy - t.ms.height / 2, t.ms.width, t.ms.height});
+            if (share >= 0 && share < kFollowForeground)
+                continue;
+        }
         t.follow(cfg_.detection_noise);
     }
 }
