@@ -433,9 +433,8 @@ bool BlobFinder::outer_blobs()
         // A mask more than kMaxForeground foreground is no picture of
         // people (a light switched, the camera moved, noise the model has
         // not learnt): nothing in it is a candidate.
-        long fg = 0;
-        for (int y = m.area.y0; y < m.area.y1; y++)
-            fg += count_nonzero(m.at(m.area.x0, y), m.area.x1 - m.area.x0);
+        const long fg = count_nonzero(m.clean.data(), (size_t)m.w, m.area.x0, m.area.y0,
+                                      m.area.x1, m.area.y1);
         if (fg > kMaxForeground * m.w * m.h) {
             flooded_ = true;
             return false;
@@ -518,9 +517,7 @@ void BlobFinder::merge_fragments(int s, const PersonSize &size, Classifier &cls)
 bool BlobFinder::speck(const Rect &r, int s, const PersonSize &size) const
 {
     const Impl &m = *impl_;
-    int area = 0;
-    for (int y = r.y0; y < r.y1; y++)
-        area += count_nonzero(m.at(r.x0, y), r.x1 - r.x0);
+    const long area = count_nonzero(m.clean.data(), (size_t)m.w, r.x0, r.y0, r.x1, r.y1);
     // A speck or a fragment: under a part of the person who would stand
     // where the blob's feet are (working pixels; while the size model knows
     // nothing there, under the prior's smallest person).

@@ -145,9 +145,7 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     if (x1 - x0 < 4 || y1 - y0 < 6 || bx1 <= bx0 || by1 <= by0 || x1 - x0 > kMaxColumns)
         return false;
     // One person, clearly: neither a fragment nor a filled block.
-    long inside = 0;
-    for (int y = by0; y < by1; y++)
-        inside += count_nonzero(mask + (size_t)y * w + bx0, bx1 - bx0);
+    const long inside = count_nonzero(mask, (size_t)w, bx0, by0, bx1, by1);
     const double fill = (double)inside / ((double)(bx1 - bx0) * (by1 - by0));
     if (fill < kMinFill || fill > kMaxFill)
         return false;

@@ -329,10 +329,7 @@ bool PixelCandidates::silhouettes_clear(int64_t t_us) const
         background_.since_camera_moved_s(t_us) < kLearntFor)
         return false;
     const int w = background_.width(), h = background_.height();
-    long fg = 0;
-    const uint8_t *m = blobs_.cleaned();
-    for (int y = 0; y < h; y++)
-        fg += count_nonzero(m + (size_t)y * w, w);
+    const long fg = count_nonzero(blobs_.cleaned(), (size_t)w, 0, 0, w, h);
     return fg <= kMaxForegroundShare * w * h;
 }
 
@@ -356,14 +353,11 @@ double PixelCandidates::foreground_share(const Box &b) const
     const int s = background_.scale(), w = background_.width(), h = background_.height();
     const Rect r = to_working(b, s);
     const int x0 = std::max(0, r.x0), x1 = std::min(w, r.x1);
-    if (x1 <= x0)
+    const int y0 = std::max(0, r.y0), y1 = std::min(h, r.y1);
+    if (x1 <= x0 || y1 <= y0)
         return -1;
-    long set = 0, area = 0;
-    for (int y = std::max(0, r.y0); y < std::min(h, r.y1); y++) {
-        set += count_nonzero(blobs_.cleaned() + (size_t)y * w + x0, x1 - x0);
-        area += x1 - x0;
-    }
-    return area > 0 ? (double)set / (double)area : -1;
+    return (double)count_nonzero(blobs_.cleaned(), (size_t)w, x0, y0, x1, y1) /
+           ((double)(x1 - x0) * (y1 - y0));
 }
 
 void PixelCandidates::barycenter(const Box &b, float *x, float *y) const

@@ -30,6 +30,16 @@ inline int count_nonzero(const uint8_t *p, int n)
     return c;
 }
 
+// Non-zero bytes of the mask (rows of `stride` bytes) in the box
+// [x0, x1) x [y0, y1), which lies within it.
+inline long count_nonzero(const uint8_t *mask, size_t stride, int x0, int y0, int x1, int y1)
+{
+    long c = 0;
+    for (int y = y0; y < y1; y++)
+        c += count_nonzero(mask + (size_t)y * stride + x0, x1 - x0);
+    return c;
+}
+
 // Whether pixel (x, y) of the mask (rows of `stride` bytes) is on the
 // outline of the foreground inside the box [x0, x1) x [y0, y1), which lies
 // within the mask: foreground, with a 4-neighbour that is background or

@@ -645,7 +645,8 @@ void Engine::step_unguarded(int64_t t_us, const Planes &img, ImageSize image,
     ns[CT_STAGE_PREDICT] += sw.lap();
     if (find_candidates(time.scene_us, img, &dets, &n))
         sw.lap(); // its stages counted themselves
-    silhouettes_ = pixels_.silhouettes_clear(time.scene_us);
+    // Read by the fit and by mean shift's follow (a pass over the mask).
+    silhouettes_ = (cfg_.refine_boxes || pixels) && pixels_.silhouettes_clear(time.scene_us);
     fit_boxes_ = cfg_.refine_boxes && silhouettes_;
     if (pixels) {
         refine(img);
