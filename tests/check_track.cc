@@ -674,6 +674,42 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 }
 END_TEST
 
+// A box cut short of a person grows to the height a person whose head is at
+// its top has, only where the people's line holds that height at their
+// feet (PersonSize::line_holds_at()): with a slope near 1, the height
+// under a head at row 60 of a 200-row image is past the tallest person the
+// line may give (400 rows: PersonSize::max_height()), and the box keeps
+// its rows; with the line of people 0.6 of their feet's row tall it grows
+// to that person (90 rows).
+START_TEST(a_cut_box_grows_only_to_a_height_the_line_holds)
+{
+    static uint8_t m[100 * 200];
+    draw_standing(m, 60, false);
+    const Box cut{36, 60, 28, 40}; // cut at the chest
+    Box out;
+    PersonSize steep;
+    steep.reset(200);
+    for (int k = 0; k < 400; k++) {
+        const double y = 100 + k % 100, h = 0.95 * y - 10;
+        steep.observe(y - h, h, 0.35 * h);
+    }
+    steep.learn();
+    ck_assert(steep.known() && steep.slope() < 1);
+    ck_assert_double_gt(steep.height_under_head(60), steep.max_height());
+    ck_assert(fit_box(m, 100, 200, 1, cut, kFitFollow, &steep, true, &out));
+    ck_assert_msg(out.height <= 200, "grown to %.0f rows", out.height);
+    PersonSize size;
+    size.reset(200);
+    for (int k = 0; k < 400; k++) {
+        const double y = 100 + k % 100, h = 0.6 * y;
+        size.observe(y - h, h, 0.35 * h);
+    }
+    size.learn();
+    ck_assert(fit_box(m, 100, 200, 1, cut, kFitFollow, &size, true, &out));
+    ck_assert_double_gt(out.height, 80);
+}
+END_TEST
+
 // A detector's box more than a tenth taller than the person whose feet are
 // at its bottom row becomes that person; a box within a tenth, or where
 // the people's size does not speak (above the highest feet it has seen by
@@ -766,6 +802,7 @@ int main(void)
     tcase_add_test(tc, filter_learns_a_constant_velocity);
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
+    tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);
     tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
     tcase_add_test(tc, a_box_where_the_size_is_held_at_its_bound_is_not_cut);
     tcase_add_test(tc, filter_prediction_grows_with_time);
