@@ -226,8 +226,9 @@ template <int N> CT_ALWAYS_INLINE void update_row(const BgRow &a)
     }
 }
 
-// The frame's samples at the working pixels: every scale-th luma through
-// the exposure table (or as they are, lut null), and the chroma samples
+// The frame's samples at the working pixels: every scale-th luma (or the
+// mean of the 2 x 2 pixels there, with src_y2) through the exposure table
+// (or as they are, lut null), and the chroma samples
 // when they are not read in place (NV12's interleaved ones, and every
 // scale but 2). Scale 2, the usual one, has its own loops: a constant
 // stride vectorises.
@@ -236,6 +237,28 @@ template <int S> CT_ALWAYS_INLINE void gather_luma(const BgGather &g, int s)
     const uint8_t *__restrict src = g.src_y;
     uint8_t *__restrict iy = g.iy;
     const int w = g.w, step = S ? S : s;
+    if (g.src_y2) {
+        const uint8_t *__restrict below = g.src_y2;
+        const int pairs = std::min(g.pairs, w);
+        if (g.lut) {
+            const uint8_t *__restrict lut = g.lut;
+            for (int x = 0; x < pairs; x++) {
+                const int i = x * step;
+                iy[x] = lut[(src[i] + src[i + 1] + below[i] + below[i + 1] + 2) >> 2];
+            }
+        } else {
+            for (int x = 0; x < pairs; x++) {
+                const int i = x * step;
+                iy[x] = (uint8_t)((src[i] + src[i + 1] + below[i] + below[i + 1] + 2) >> 2);
+            }
+        }
+        // The last column of an odd-sized frame pairs with itself.
+        for (int x = pairs; x < w; x++) {
+            const int m = (src[x * step] + below[x * step] + 1) >> 1;
+            iy[x] = g.lut ? g.lut[m] : (uint8_t)m;
+        }
+        return;
+    }
     if (g.lut) {
         const uint8_t *__restrict lut = g.lut;
         for (int x = 0; x < w; x++)

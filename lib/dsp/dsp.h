@@ -51,6 +51,10 @@ constexpr int kBgShadowLow = 8, kBgShadowHigh = 15;
 
 struct BgGather {
     const uint8_t *src_y, *lut, *su, *sv;
+    // The frame's row under src_y: each luma sample is then the mean of
+    // the 2 x 2 pixels at its block's top left (null: the top-left pixel).
+    const uint8_t *src_y2 = nullptr;
+    int pairs = 0; // the samples whose pixel has a right neighbour (with src_y2)
     uint8_t *iy, *iu, *iv;
     int w, c_step, scale = 2;
     bool c_half = false;

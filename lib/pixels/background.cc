@@ -57,6 +57,19 @@ constexpr int kChromaForeground = 24;
 // (docs/tuning.md, "The scene's noise, contrast and black level").
 CT_TUNABLE(kLumaNoise, "CTRACK_LUMA_NOISE", 3.5);
 constexpr double kChromaNoise = 4.0, kShadowNoise = 1.0;
+// Where the frame's fine noise (NoiseLevel::fine) reaches kMeanNoise grey
+// levels, each working pixel is the mean of the 2 x 2 frame pixels at its
+// block's top left rather than the top-left one alone: the noise's
+// deviation halves, and a person at the working scale keeps the shape one
+// pixel of the block gives. Clean frames read 0.5 to 2.4 levels, ffmpeg's
+// noise=alls=6 3.5 to 3.8; off again under kMeanNoiseOff times the level
+// (docs/tuning.md, "Sensor noise: 2 x 2 means"). At scale 1 there is no
+// block to average.
+CT_TUNABLE(kMeanNoise, "CTRACK_MEAN_NOISE", 3.0);
+constexpr double kMeanNoiseOff = 2.0 / 3.0;
+// The median absolute difference of two pixels of Gaussian noise, in the
+// noise's standard deviations (sqrt(2) times 0.6745).
+constexpr double kMadOfDifference = 0.954;
 // For the first kMotionS seconds the model holds the people of its first
 // frames, and the frame's change from the frame before shows where people
 // are (motion()): a change above kMotionFloor grey levels, and above
@@ -238,6 +251,7 @@ void Background::rollback()
     start_us_ = old_dims_.start_us;
     last_us_ = old_dims_.last_us;
     noise_ = old_dims_.noise;
+    mean_2x2_ = old_dims_.mean_2x2;
     set_gain(old_dims_.gain);
     camera_moved_ = old_dims_.camera_moved;
     moved_us_ = old_dims_.moved_us;
@@ -344,7 +358,7 @@ Background::Update Background::prepare(const Planes &img, int scale, const Rect 
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
     old_dims_ = Dims{w_,        h_,       fw_,    fh_,   scale_,         color_,   frames_,
-                     start_us_, last_us_, noise_, gain_, camera_moved_, moved_us_};
+                     start_us_, last_us_, noise_, gain_, camera_moved_, moved_us_, mean_2x2_};
     swap_models();
     kept_ = true;
     scale = std::min(std::max(scale, finest_), kMaxScale);
@@ -412,6 +426,11 @@ BgGather Background::gather(const Planes &img, int y, const uint8_t **iu,
     const int sc = scale_;
     BgGather g;
     g.src_y = img.y + (size_t)(y * sc) * img.y_stride;
+    if (mean_2x2_) {
+        // The last row and column of an odd-sized frame pair with themselves.
+        g.src_y2 = y * sc + 1 < img.height ? g.src_y + img.y_stride : g.src_y;
+        g.pairs = std::min(w_, (img.width - 1 + sc - 1) / sc);
+    }
     g.lut = gain_ == 1.0 ? nullptr : gain_lut_;
     g.w = w_;
     g.scale = sc;
@@ -504,6 +523,12 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     const Update u = prepare(img, scale, frozen, n_frozen);
     if (u.restart)
         start_us_ = last_us_ = t_us;
+    // Under sensor noise, 2 x 2 means (kMeanNoise), decided as the levels
+    // are, on the frames before this one (the first frame starts the model
+    // from its pixels as they are), and on the noise within the frames:
+    // the means halve the noise the model sees, not that one.
+    const double mean_level = mean_2x2_ ? kMeanNoiseOff * kMeanNoise : kMeanNoise;
+    mean_2x2_ = !u.restart && scale_ >= 2 && kMeanNoise > 0 && noise_.fine >= mean_level;
     // This frame's rates and decision levels, the same for every row.
     const BgRow r = rates(t_us);
     // The noise is sampled on a grid of every 4th working pixel, from the
@@ -525,9 +550,35 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     find_motion(t_us);
     if (sample)
         noise_.end(noise_samples_, u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
+    noise_.end_fine(fine_noise(img), u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     frames_++;
     if (u.rescale)
         release_resampled();
+}
+
+double Background::fine_noise(const Planes &img) const
+{
+    // Over a grid of every 4th working pixel: the frame's pixel there
+    // against its right neighbour. Texture finer than a pixel counts too,
+    // but on most of a scene's pixels there is none.
+    uint32_t hist[256] = {};
+    uint32_t n = 0;
+    const int s = scale_;
+    for (int y = 0; y < h_; y += 4) {
+        const uint8_t *row = img.y + (size_t)(y * s) * img.y_stride;
+        for (int x = 0; x < w_ && x * s + 1 < img.width; x += 4, n++)
+            hist[std::abs((int)row[x * s] - (int)row[x * s + 1])]++;
+    }
+    if (n == 0)
+        return 0.0;
+    // The median between levels (the counts spread evenly over each
+    // level's unit): the levels near it are one or two grey levels apart.
+    const int v = (int)median_of(hist, n);
+    uint32_t below = 0;
+    for (int i = 0; i < v; i++)
+        below += hist[i];
+    const double median = v - 0.5 + (0.5 * n - below) / std::max<uint32_t>(hist[v], 1);
+    return std::max(0.0, median) / kMadOfDifference;
 }
 
 void Background::find_motion(int64_t t_us)
@@ -567,11 +618,17 @@ void for_each_blob_pixel(const uint8_t *blob, int w, int h, const Rect &r, F &&f
 
 // Luma at working pixel (x, y) of a model at scale s, clamped to the
 // image, through the exposure table lut.
-inline int luma_at(const Planes &img, const uint8_t *lut, int s, int w, int h, int x, int y)
+inline int luma_at(const Planes &img, const uint8_t *lut, int s, int w, int h, int x, int y,
+                   bool mean_2x2)
 {
     x = std::min(std::max(x, 0), w - 1);
     y = std::min(std::max(y, 0), h - 1);
-    return lut[img.y[(size_t)(y * s) * img.y_stride + (size_t)x * s]];
+    const uint8_t *p = img.y + (size_t)(y * s) * img.y_stride + (size_t)x * s;
+    if (!mean_2x2)
+        return lut[p[0]];
+    const size_t right = x * s + 1 < img.width ? 1 : 0;
+    const size_t below = y * s + 1 < img.height ? img.y_stride : 0;
+    return lut[(p[0] + p[right] + p[below] + p[below + right] + 2) >> 2];
 }
 
 } // namespace
@@ -588,10 +645,9 @@ void Background::outline_edges(const Planes &img, const uint8_t *blob, const Rec
         y = std::min(std::max(y, 0), h - 1);
         return (int)my_[(size_t)y * w + x];
     };
-    const uint8_t *g = gain_lut_;
+    auto f = [&](int x, int y) { return luma_at(img, gain_lut_, s, w, h, x, y, mean_2x2_); };
     for_each_outline(blob, (size_t)w, x0, y0, x1, y1, [&](int x, int y) {
-        *frame += std::abs(luma_at(img, g, s, w, h, x + 1, y) - luma_at(img, g, s, w, h, x - 1, y)) +
-                  std::abs(luma_at(img, g, s, w, h, x, y + 1) - luma_at(img, g, s, w, h, x, y - 1));
+        *frame += std::abs(f(x + 1, y) - f(x - 1, y)) + std::abs(f(x, y + 1) - f(x, y - 1));
         *model += std::abs(m(x + 1, y) - m(x - 1, y)) + std::abs(m(x, y + 1) - m(x, y - 1));
     });
 }
@@ -620,7 +676,7 @@ void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)
 {
     const int s = scale_;
     for_each_blob_pixel(blob, w_, h_, r, [&](int x, int y, size_t i) {
-        my_[i] = (uint8_t)luma_at(img, gain_lut_, s, w_, h_, x, y);
+        my_[i] = (uint8_t)luma_at(img, gain_lut_, s, w_, h_, x, y, mean_2x2_);
         if (color_) {
             const size_t cy = (size_t)((y * s) >> 1), cx = (size_t)((x * s) >> 1);
             mu_[i] = img.u[cy * img.u_stride + cx * img.c_step];

@@ -95,6 +95,9 @@ public:
     // Whether the frames' luma is kept for live() (from the next apply();
     // off, its buffers are freed).
     void keep_luma(bool on);
+    // Whether the last frame's working pixels were 2 x 2 means of the
+    // frame's (under sensor noise), not one pixel of their block.
+    bool averages() const { return mean_2x2_; }
     int width() const { return w_; }
     int height() const { return h_; }
     size_t memory_bytes() const;
@@ -137,6 +140,10 @@ private:
     void swap_models();
     // motion() for this frame, or its buffer freed once the time is past.
     void find_motion(int64_t t_us);
+    // The noise within the frame (NoiseLevel::fine): the median absolute
+    // difference between horizontal neighbours over a grid of the working
+    // pixels, as a standard deviation.
+    double fine_noise(const Planes &img) const;
 
     static Dsp make_dsp();
     Dsp dsp_; // the row kernels for this CPU, chosen when the tracker is made
@@ -145,6 +152,8 @@ private:
     int frames_ = 0;
     NoiseLevel noise_;
     NoiseSamples noise_samples_;
+    // Whether this frame's working pixels are 2 x 2 means (kMeanNoise).
+    bool mean_2x2_ = false;
     // The exposure, and the table through which the frame's luma is read:
     // the model stays in its own exposure while the frames' changes, and a
     // global step of light is no foreground.
@@ -165,6 +174,7 @@ private:
         double gain;
         bool camera_moved;
         int64_t moved_us;
+        bool mean_2x2;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     // This frame's luma and the last one's, at the working scale (swapped

@@ -76,6 +76,13 @@ constexpr double kDarkPercentile = 0.01;
 
 } // namespace
 
+void NoiseLevel::end_fine(double sd, double dt)
+{
+    const double rate = fine_known_ && dt > 0 ? 1.0 - std::exp(-dt / kNoiseTime) : 1.0;
+    fine += rate * (sd - fine);
+    fine_known_ = true;
+}
+
 void NoiseLevel::end(const NoiseSamples &s, double dt)
 {
     if (s.n == 0)

@@ -51,13 +51,21 @@ private:
 struct NoiseLevel {
     double luma = 0, chroma = 0; // standard deviations, grey levels
     double contrast = 0, dark = 0; // grey levels
+    // The noise within the frame itself (Background's fine_noise(): the
+    // differences between neighbouring pixels), a standard deviation. It
+    // does not depend on the model, so the model's own choices (its 2 x 2
+    // means) do not move it.
+    double fine = 0;
     // The frame's samples into the estimates, dt seconds after the last.
     void end(const NoiseSamples &s, double dt);
+    // A frame's fine noise into its estimate, dt seconds after the last.
+    void end_fine(double sd, double dt);
     // Whether a frame has been sampled (else all are 0).
     bool known() const { return known_; }
 
 private:
     bool known_ = false; // the first frame's samples are taken as they are
+    bool fine_known_ = false;
 };
 
 // Histograms of 256 levels: the sum of four taken in turn, the q-quantile
