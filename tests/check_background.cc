@@ -427,9 +427,10 @@ END_TEST
 // Under sensor noise (the sum of two uniform draws, sd 10 levels) each
 // working pixel is the mean of a 2 x 2 block, which halves the noise: a
 // person 30 levels darker than the ground is foreground (86% of their
-// working pixels), where the floor of 3.5 deviations of the noise as it is
-// hides most of them (7.5%), and the ground around them stays background. On the clean scene the
-// working pixels stay one pixel of their block.
+// working pixels), where the floor of 3.5 deviations of the noise as it
+// is hides most of them (7.5%), and the ground around them stays
+// background. On the clean scene the working pixels stay one pixel of
+// their block.
 START_TEST(sensor_noise_is_averaged_away)
 {
     const int px0 = 60, px1 = 76, y0 = 30, y1 = 90;
