@@ -610,6 +610,17 @@ START_TEST(fit_bias_learns_what_the_fit_does)
 }
 END_TEST
 
+// The people's size learnt from 400 boxes whose feet are on rows 100 to
+// 199, each slope * (feet row) + offset pixels tall.
+static void learn_line(PersonSize &size, double slope, double offset)
+{
+    for (int k = 0; k < 400; k++) {
+        const double y = 100 + k % 100, h = slope * y + offset;
+        size.observe(y - h, h, 0.35 * h);
+    }
+    size.learn();
+}
+
 // A person's silhouette in a 100 x 200 mask (scale 1): head, torso and legs,
 // its head's top at `top` and its feet at row 160, centred on column 50;
 // with `behind`, another person's head and shoulders just above, joined to
@@ -648,11 +659,7 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 {
     PersonSize size;
     size.reset(200);
-    for (int k = 0; k < 400; k++) {
-        const double y = 100 + k % 100, h = 0.6 * y;
-        size.observe(y - h, h, 0.35 * h);
-    }
-    size.learn();
+    learn_line(size, 0.6, 0);
     ck_assert(size.known() && size.speaks_at(160));
     ck_assert_double_eq_tol(size.height_at(160), 96, 5);
     static uint8_t m[100 * 200];
@@ -689,22 +696,14 @@ START_TEST(a_cut_box_grows_only_to_a_height_the_line_holds)
     Box out;
     PersonSize steep;
     steep.reset(200);
-    for (int k = 0; k < 400; k++) {
-        const double y = 100 + k % 100, h = 0.95 * y - 10;
-        steep.observe(y - h, h, 0.35 * h);
-    }
-    steep.learn();
+    learn_line(steep, 0.95, -10);
     ck_assert(steep.known() && steep.slope() < 1);
     ck_assert_double_gt(steep.height_under_head(60), steep.max_height());
     ck_assert(fit_box(m, 100, 200, 1, cut, kFitFollow, &steep, true, &out));
     ck_assert_msg(out.height <= 200, "grown to %.0f rows", out.height);
     PersonSize size;
     size.reset(200);
-    for (int k = 0; k < 400; k++) {
-        const double y = 100 + k % 100, h = 0.6 * y;
-        size.observe(y - h, h, 0.35 * h);
-    }
-    size.learn();
+    learn_line(size, 0.6, 0);
     ck_assert(fit_box(m, 100, 200, 1, cut, kFitFollow, &size, true, &out));
     ck_assert_double_gt(out.height, 80);
 }
@@ -720,11 +719,7 @@ START_TEST(a_box_over_more_than_one_person_is_cut_to_one)
     size.reset(200);
     Box b{36, 40, 28, 120};
     ck_assert(!cut_to_one_person(size, &b)); // the size is not known yet
-    for (int k = 0; k < 400; k++) {
-        const double y = 100 + k % 100, h = 0.6 * y;
-        size.observe(y - h, h, 0.35 * h);
-    }
-    size.learn();
+    learn_line(size, 0.6, 0);
     const double tall = size.height_at(160);
     ck_assert_double_eq_tol(tall, 96, 5);
     ck_assert(cut_to_one_person(size, &b)); // 120 rows, feet at 160
