@@ -183,7 +183,10 @@ typedef struct ct_config {
      * a background is read (source CT_SOURCE_PIXELS, verify_detections
      * or refine_boxes) and has learnt for a second with the camera still,
      * a window less than a tenth foreground does not carry it: the person
-     * has gone.
+     * has gone. From the pixels alone, a track that never moved, stands
+     * where it started and barely moves is carried whatever its window's
+     * foreground, and a stir in its box counts as a detection: a person
+     * standing since the first frame, whom the background holds.
      * Default 1; range [0, 3600]. */
     double mean_shift_max_time;
     /* Learning rate of the colour model (the paper's eq. 9).

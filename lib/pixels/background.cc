@@ -604,14 +604,15 @@ void Background::find_motion(int64_t t_us)
 namespace {
 
 // Calls f(x, y, i) for each pixel of the blob `blob` (a w x h mask,
-// non-zero inside) within r clipped to the mask, i its index.
+// non-zero inside; null: every pixel) within r clipped to the mask, i its
+// index.
 template <typename F>
 void for_each_blob_pixel(const uint8_t *blob, int w, int h, const Rect &r, F &&f)
 {
     for (int y = std::max(r.y0, 0); y < std::min(r.y1, h); y++)
         for (int x = std::max(r.x0, 0); x < std::min(r.x1, w); x++) {
             const size_t i = (size_t)y * w + x;
-            if (blob[i])
+            if (!blob || blob[i])
                 f(x, y, i);
         }
 }

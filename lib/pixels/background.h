@@ -90,7 +90,7 @@ public:
     // at least kLiveFraction of its pixels changed by more than V's floor
     // (the scene's noise). A person standing still sways and breathes; a
     // board or a bag put down does not. False when the frame before was at
-    // another size or scale.
+    // another size or scale. A null blob asks it of every pixel of r.
     bool live(const uint8_t *blob, const Rect &r) const;
     // Whether the frames' luma is kept for live() (from the next apply();
     // off, its buffers are freed).

@@ -360,6 +360,11 @@ double PixelCandidates::foreground_share(const Box &b) const
            ((double)(x1 - x0) * (y1 - y0));
 }
 
+bool PixelCandidates::stirs(const Box &b) const
+{
+    return have_mask_ && background_.live(nullptr, to_working(b, background_.scale()));
+}
+
 void PixelCandidates::barycenter(const Box &b, float *x, float *y) const
 {
     *x = (float)(b.left + b.width / 2);

@@ -64,6 +64,9 @@ public:
     // Whether this step's candidate i (of find()) moved inside since the
     // frame before (Background::live(); computed when asked).
     bool live(size_t i) const;
+    // Whether the frame changed within box b (frame pixels) since the
+    // frame before, as live() asks of a blob, over all of b's pixels.
+    bool stirs(const Box &b) const;
     // The share of box b (frame pixels) that this step's foreground fills,
     // or -1 when the step has no mask.
     double foreground_share(const Box &b) const;

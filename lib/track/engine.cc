@@ -22,6 +22,19 @@ constexpr double kMinInside = 0.9;
 // stays foreground: the model is frozen under a confirmed track that moved
 // (docs/tuning.md, "Mean shift on the background").
 CT_TUNABLE(kFollowForeground, "CTRACK_FOLLOW_FOREGROUND", 0.1);
+// A person standing from the first frame is in the model from the start:
+// their blob is the outline their sway stirs, under the share above, and
+// no candidate comes for seconds on end. From the pixels alone, a
+// confirmed track that never moved (half its height), stands within
+// kStillReach of its height from where it started and moves under
+// kStillSpeed of its height a second is carried by mean shift whatever
+// the foreground, and a stir of its box (Background::live() over the box)
+// keeps it as a candidate would for mean_shift_max_time. A walker's track
+// left on the background has moved or moves, and is not held
+// (docs/tuning.md, "A person standing from the first frame").
+CT_TUNABLE(kStillHold, "CTRACK_STILL_HOLD", 1);
+CT_TUNABLE(kStillReach, "CTRACK_STILL_REACH", 0.1);
+CT_TUNABLE(kStillSpeed, "CTRACK_STILL_SPEED", 0.1);
 constexpr double kMinSide = 1.0;
 // A tentative track meets a detection that misses its IoU gate when the
 // detection's centre lies within this many standard deviations of where
@@ -150,7 +163,15 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
             t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
-        if (elapsed_s(t_us, t.last_update_us) > cfg_.mean_shift_max_time)
+        const bool still = kStillHold > 0 && cfg_.source == CT_SOURCE_PIXELS && !t.moved &&
+                           !t.object && t.from_start(t.box()) <= kStillReach * t.box().height &&
+                           std::hypot(t.cx.v, t.cy.v) <= kStillSpeed * t.h.x;
+        if (still && pixels_.stirs(t.box()))
+            t.stir_us = t_us;
+        const double quiet_s = elapsed_s(t_us, still && t.stir_us > t.last_update_us
+                                                   ? t.stir_us
+                                                   : t.last_update_us);
+        if (quiet_s > cfg_.mean_shift_max_time)
             continue;
         // Behind another person the window sees the occluder: coast instead.
         if (occluded(state_.tracks, i))
@@ -161,9 +182,11 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (t.ms.rho < min_rho_)
             continue;
         if (silhouettes_ && kFollowForeground > 0) {
-            const double share = pixels_.foreground_share(
-                Box{t.ms.cx - t.ms.width / 2, t.ms.cy - t.ms.height / 2, t.ms.width, t.ms.height});
-            if (share >= 0 && share < kFollowForeground)
+            const Box w{t.ms.cx - t.ms.width / 2, t.ms.cy - t.ms.height / 2, t.ms.width,
+                        t.ms.height};
+            const double share = pixels_.foreground_share(w);
+            if (share >= 0 && share < kFollowForeground &&
+                !(still && t.from_start(w) <= kStillReach * w.height))
                 continue;
         }
         t.follow(cfg_.detection_noise);

@@ -96,6 +96,8 @@ struct Track : BoxMotion {
     // candidate.
     int64_t live_us = 0;
     bool object = false;
+    // The last step a still track's box stirred (Engine::follow_or_lose()).
+    int64_t stir_us = -1;
     int det_index = -1;
     int class_id = 0;
     float score = 0;
