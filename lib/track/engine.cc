@@ -24,14 +24,16 @@ constexpr double kMinInside = 0.9;
 CT_TUNABLE(kFollowForeground, "CTRACK_FOLLOW_FOREGROUND", 0.1);
 // A person standing from the first frame is in the model from the start:
 // their blob is the outline their sway stirs, under the share above, and
-// no candidate comes for seconds on end. From the pixels alone, a
-// confirmed track that never moved (half its height), stands within
-// kStillReach of its height from where it started and moves under
-// kStillSpeed of its height a second is carried by mean shift whatever
-// the foreground, and a stir of its box (Background::live() over the box)
-// keeps it as a candidate would for mean_shift_max_time. A walker's track
-// left on the background has moved or moves, and is not held
-// (docs/tuning.md, "A person standing from the first frame").
+// no candidate comes for seconds on end. From the pixels alone, where the
+// model shows silhouettes clearly (learnt for a second, the camera still:
+// a moving picture stirs every box), a confirmed track that never moved
+// (half its height), stands within kStillReach of its height from where
+// it started and moves under kStillSpeed of its height a second is carried
+// by mean shift whatever the foreground, and a stir of its box
+// (Background::live() over the box) keeps it as a candidate would for
+// mean_shift_max_time. A walker's track left on the background has moved
+// or moves, and is not held (docs/tuning.md, "A person standing from the
+// first frame").
 CT_TUNABLE(kStillHold, "CTRACK_STILL_HOLD", 1);
 CT_TUNABLE(kStillReach, "CTRACK_STILL_REACH", 0.1);
 CT_TUNABLE(kStillSpeed, "CTRACK_STILL_SPEED", 0.1);
@@ -163,8 +165,9 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
             t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
-        const bool still = kStillHold > 0 && cfg_.source == CT_SOURCE_PIXELS && !t.moved &&
-                           !t.object && t.from_start(t.box()) <= kStillReach * t.box().height &&
+        const bool still = kStillHold > 0 && cfg_.source == CT_SOURCE_PIXELS && silhouettes_ &&
+                           !t.moved && !t.object &&
+                           t.from_start(t.box()) <= kStillReach * t.box().height &&
                            std::hypot(t.cx.v, t.cy.v) <= kStillSpeed * t.h.x;
         if (still && pixels_.stirs(t.box()))
             t.stir_us = t_us;
