@@ -424,6 +424,54 @@ START_TEST(live_tells_a_stirring_blob_from_a_still_one)
 }
 END_TEST
 
+// A slow stir (Background::live() with commit() between frames, as the
+// engine calls it): half the square's rows brighten and darken by 8 levels
+// a frame at 25 frames/s, under V's floor from one frame to the next; a
+// frame kept until it is 0.3 s old shows it. A sway to and fro every
+// frame (the stripes above) shows against the frame before, whose change
+// the kept frame, two frames back at times, would not see.
+START_TEST(live_reads_a_slow_stir_against_a_kept_frame)
+{
+    for (int kind = 0; kind < 3; kind++) {
+        Background bg;
+        bg.keep_luma(true);
+        Gray g;
+        int live = 0, steps = 0;
+        for (int k = 0; k < 60; k++) {
+            g.fill(100);
+            g.square(60, 40, 40, 200);
+            const int ramp = k < 30 ? 0 : (k - 30) % 32 < 16 ? (k - 30) % 32 : 32 - (k - 30) % 32;
+            for (int r = 40; r < 60; r++)
+                for (int c = 60; c < 100; c++) {
+                    if (kind == 0)
+                        g.y[r * W + c] = (uint8_t)(120 + 8 * ramp);
+                    else if (kind == 1 && k >= 30)
+                        g.y[r * W + c] = (uint8_t)((c + 2 * (k % 2)) / 4 % 2 ? 120 : 200);
+                }
+            bg.commit();
+            bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
+            const int s = Background::kStartScale;
+            Vec<uint8_t> blob((size_t)bg.width() * bg.height(), 0);
+            for (int r = 40 / s; r < 80 / s; r++)
+                for (int c = 60 / s; c < 100 / s; c++)
+                    blob[(size_t)r * bg.width() + c] = 255;
+            if (k >= 31) {
+                steps++;
+                live += bg.live(blob.data(), Rect{60 / s, 40 / s, 100 / s, 80 / s});
+            }
+        }
+        // The slow stir: alive in most frames (against a frame 1 to 8
+        // frames old); the stripes in every one; the still square in none.
+        if (kind == 0)
+            ck_assert_msg(live >= steps / 2, "slow stir: alive in %d of %d frames", live, steps);
+        else if (kind == 1)
+            ck_assert_msg(live == steps, "stripes: alive in %d of %d frames", live, steps);
+        else
+            ck_assert_msg(live == 0, "still: alive in %d of %d frames", live, steps);
+    }
+}
+END_TEST
+
 // Under sensor noise (the sum of two uniform draws, sd 10 levels) each
 // working pixel is the mean of a 2 x 2 block, which halves the noise: a
 // person 30 levels darker than the ground is foreground (86% of their
@@ -1370,6 +1418,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
     tcase_add_test(tc, live_tells_a_stirring_blob_from_a_still_one);
+    tcase_add_test(tc, live_reads_a_slow_stir_against_a_kept_frame);
     tcase_add_test(tc, sensor_noise_is_averaged_away);
     tcase_add_test(tc, start_lasts_the_same_time_at_any_frame_rate);
     tcase_add_test(tc, start_with_timestamps_far_apart);

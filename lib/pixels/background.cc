@@ -99,6 +99,13 @@ constexpr int kVMinLowest = 10;
 // sqrt(2) times the noise, and the floor is 3.5 times it): the share asked
 // is some four times that (docs/tuning.md, "An object put down").
 CT_TUNABLE(kLiveFraction, "CTRACK_LIVE_FRACTION", 0.05);
+// live() reads change from the frame before and from a frame kept until it
+// is kLiveSpanS old. A pixel's sway at 0.5 Hz moves 0.3 pixels a frame at
+// 10 frames/s and 0.13 at 25, which stirs too few pixels; over 0.3 s it
+// moves up to 0.9 (docs/tuning.md, "A person standing from the first
+// frame"). Counted in frames, the same sway would be alive at 10 frames/s
+// and not at 25.
+CT_TUNABLE(kLiveSpanS, "CTRACK_LIVE_SPAN", 0.3);
 
 } // namespace
 
@@ -205,7 +212,7 @@ size_t Background::memory_bytes() const
 {
     return my_.capacity() + vy_.capacity() + mu_.capacity() + mv_.capacity() +
            old_my_.capacity() + old_vy_.capacity() + old_mu_.capacity() + old_mv_.capacity() +
-           luma_.capacity() + old_luma_.capacity() + motion_.capacity() +
+           luma_.capacity() + old_luma_.capacity() + ref_luma_.capacity() + motion_.capacity() +
            mask_.capacity() + frozen_line_.capacity() + line_y_.capacity() + line_u_.capacity() +
            line_v_.capacity() + line_vmax_.capacity() + line_dy_.capacity() +
            line_dc_.capacity() + noise_samples_.memory_bytes() +
@@ -538,6 +545,8 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
         noise_samples_.begin();
     update_rows(img, frozen, n_frozen, r, u, sample);
     have_last_ = keep_luma_ && !u.restart && !u.rescale && old_luma_.size() == luma_.size();
+    have_ref_ = have_last_ && ref_luma_.size() == luma_.size() && ref_scale_ == scale_ &&
+                ref_start_us_ == start_us_;
     live_level_ = r.vmin;
     // The camera, against the frame before at the same scale and size.
     constexpr int kReach = 8;
@@ -657,20 +666,42 @@ void Background::keep_luma(bool on)
 {
     keep_luma_ = on;
     if (!on && !kept_) // a step that may still be rolled back keeps the last frame's
-        for (Vec<uint8_t> *v : {&luma_, &old_luma_})
+        for (Vec<uint8_t> *v : {&luma_, &old_luma_, &ref_luma_})
             Vec<uint8_t>(v->get_allocator()).swap(*v);
+}
+
+void Background::commit()
+{
+    kept_ = false;
+    // The last frame stands: it becomes the one live() compares with once
+    // the one kept is kLiveSpanS old.
+    if (!keep_luma_ || frames_ == 0 || luma_.size() != (size_t)w_ * h_)
+        return;
+    const bool same = ref_luma_.size() == luma_.size() && ref_scale_ == scale_ &&
+                      ref_start_us_ == start_us_;
+    if (same && last_us_ >= ref_us_ && last_us_ - ref_us_ < std::llround(kLiveSpanS * 1e6))
+        return;
+    ref_luma_.assign(luma_.begin(), luma_.end());
+    ref_us_ = last_us_;
+    ref_scale_ = scale_;
+    ref_start_us_ = start_us_;
 }
 
 bool Background::live(const uint8_t *blob, const Rect &r) const
 {
     if (!have_last_)
         return false;
-    long area = 0, changed = 0;
+    // A sway to and fro from frame to frame shows against the frame before,
+    // a slow one against the kept frame.
+    const bool ref = have_ref_ && ref_us_ < old_dims_.last_us;
+    long area = 0, changed = 0, changed_ref = 0;
     for_each_blob_pixel(blob, w_, h_, r, [&](int, int, size_t i) {
         area++;
         changed += std::abs((int)luma_[i] - (int)old_luma_[i]) > live_level_;
+        if (ref)
+            changed_ref += std::abs((int)luma_[i] - (int)ref_luma_[i]) > live_level_;
     });
-    return area > 0 && changed >= kLiveFraction * area;
+    return area > 0 && std::max(changed, changed_ref) >= kLiveFraction * area;
 }
 
 void Background::absorb(const Planes &img, const uint8_t *blob, const Rect &r)

@@ -66,7 +66,9 @@ public:
     // until commit(): rollback() returns to it, so that a step that fails
     // after the update leaves the model untouched. Both are O(1) and never
     // throw.
-    void commit() { kept_ = false; }
+    // commit() also keeps the last frame's luma for live() once the one it
+    // keeps is kLiveSpanS old.
+    void commit();
     void rollback();
 
     const uint8_t *mask() const { return mask_.data(); }
@@ -86,10 +88,11 @@ public:
     // Re-learns the pixels of the blob within r at once: the model takes the
     // frame's values there.
     void absorb(const Planes &img, const uint8_t *blob, const Rect &r);
-    // Whether the blob `blob` within r moved inside since the frame before:
-    // at least kLiveFraction of its pixels changed by more than V's floor
-    // (the scene's noise). A person standing still sways and breathes; a
-    // board or a bag put down does not. False when the frame before was at
+    // Whether the blob `blob` within r moved inside since the frame before,
+    // or since the frame kept by commit() (kLiveSpanS old at most): at
+    // least kLiveFraction of its pixels changed by more than V's floor (the
+    // scene's noise). A person standing still sways and breathes; a board
+    // or a bag put down does not. False when the frame before was at
     // another size or scale. A null blob asks it of every pixel of r.
     bool live(const uint8_t *blob, const Rect &r) const;
     // Whether the frames' luma is kept for live() (from the next apply();
@@ -182,6 +185,13 @@ private:
     // this frame's V floor.
     Vec<uint8_t> luma_, old_luma_;
     bool keep_luma_ = false, have_last_ = false;
+    // The frame live() compares with (commit()), its time, and the scale
+    // and start of the model it was read at; whether this frame may be
+    // compared with it.
+    Vec<uint8_t> ref_luma_;
+    int64_t ref_us_ = 0, ref_start_us_ = 0;
+    int ref_scale_ = 0;
+    bool have_ref_ = false;
     bool motion_ready_ = false;
     Vec<uint8_t> motion_;
     int live_level_ = 0;

@@ -416,6 +416,7 @@ class _Pool:
         if not self.pool:
             return [_interrupted_row(j, self.outdir) for j in self.jobs
                     if j["input"] not in reported]
+        from concurrent.futures.process import BrokenProcessPool
         self.stop.set()
         for fut in self.futures:
             fut.cancel()
@@ -423,7 +424,18 @@ class _Pool:
         for fut, j in self.futures.items():
             if j["input"] in reported:
                 continue
-            rows.append(_interrupted_row(j, self.outdir) if fut.cancelled() else fut.result())
+            if fut.cancelled():
+                rows.append(_interrupted_row(j, self.outdir))
+                continue
+            try:
+                rows.append(fut.result())
+            except BrokenProcessPool:
+                # Ctrl-C sent to the whole process group (a terminal's) can
+                # reach a worker still starting, before _worker_init() has
+                # it ignore SIGINT: the worker ends, and with it the pool.
+                row = _interrupted_row(j, self.outdir)
+                row["error"] = "interrupted; its worker process ended"
+                rows.append(row)
         return rows
 
     def close(self):

@@ -417,6 +417,32 @@ def test_a_ray_task_that_does_not_answer_is_marked(tmp_path, monkeypatch):
     assert rows["b.y4m"]["error"] == "interrupted"
 
 
+def test_a_worker_ended_by_ctrl_c_is_marked_interrupted(tmp_path):
+    """After Ctrl-C to the process group, a pool worker the signal reached
+    before it ignored SIGINT has ended, and the pool is broken: its input's
+    row is "interrupted" like the others, not the run's crash."""
+    from concurrent.futures import Future
+    from concurrent.futures.process import BrokenProcessPool
+
+    class Stop:
+        def set(self):
+            pass
+
+    done, broken, queued = Future(), Future(), Future()
+    done.set_result({"input": "a.y4m", "status": "interrupted", "error": "interrupted"})
+    broken.set_running_or_notify_cancel()
+    broken.set_exception(BrokenProcessPool("a process in the pool was terminated"))
+    p = object.__new__(batch._Pool)
+    p.pool, p.stop, p.outdir = object(), Stop(), str(tmp_path)
+    p.futures = {done: {"input": "a.y4m", "name": "a"}, broken: {"input": "b.y4m", "name": "b"},
+                 queued: {"input": "c.y4m", "name": "c"}}
+    rows = {row["input"]: row for row in p.interrupt(set())}
+    assert rows["a.y4m"]["error"] == "interrupted"
+    assert rows["b.y4m"]["status"] == "interrupted"
+    assert rows["b.y4m"]["error"] == "interrupted; its worker process ended"
+    assert rows["c.y4m"]["error"] == "interrupted before it started"
+
+
 @pytest.mark.parametrize("how", ["signal", "interrupt_main"])
 def test_a_ray_task_stops_on_sigint_without_raising(tmp_path, long_videos, how, monkeypatch):
     """A Ray task (batch._ray_task, run here in the main thread as Ray runs
