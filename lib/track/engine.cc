@@ -37,6 +37,12 @@ CT_TUNABLE(kFollowForeground, "CTRACK_FOLLOW_FOREGROUND", 0.1);
 CT_TUNABLE(kStillHold, "CTRACK_STILL_HOLD", 1);
 CT_TUNABLE(kStillReach, "CTRACK_STILL_REACH", 0.1);
 CT_TUNABLE(kStillSpeed, "CTRACK_STILL_SPEED", 0.1);
+// Such a person's low-score candidates are often the part of their outline
+// that stirs (the legs alone, at 25 frames/s); one shorter than
+// kStillFragment of the track's height moves its box sideways only, and
+// keeps its top and height: else one such blob took the box a fifth of
+// its height down, under IoU 0.5 of the person for a second.
+CT_TUNABLE(kStillFragment, "CTRACK_STILL_FRAGMENT", 0.9);
 constexpr double kMinSide = 1.0;
 // A tentative track meets a detection that misses its IoU gate when the
 // detection's centre lies within this many standard deviations of where
@@ -165,10 +171,7 @@ void Engine::follow_or_lose(const Planes &img, int64_t t_us)
         if (t.state != CT_TRACK_CONFIRMED || t.last_update_us == t_us || !t.model.valid ||
             t.ms.iterations == 0 || t.ms.rho < min_rho_)
             continue;
-        const bool still = kStillHold > 0 && cfg_.source == CT_SOURCE_PIXELS && silhouettes_ &&
-                           !t.moved && !t.object &&
-                           t.from_start(t.box()) <= kStillReach * t.box().height &&
-                           std::hypot(t.cx.v, t.cy.v) <= kStillSpeed * t.h.x;
+        const bool still = standing(t);
         if (still && pixels_.stirs(t.box()))
             t.stir_us = t_us;
         const double quiet_s = elapsed_s(t_us, still && t.stir_us > t.last_update_us
@@ -214,6 +217,13 @@ void Engine::learn_models(const Planes &img)
     }
 }
 
+bool Engine::standing(const Track &t) const
+{
+    return kStillHold > 0 && cfg_.source == CT_SOURCE_PIXELS && silhouettes_ && !t.moved &&
+           !t.object && t.from_start(t.box()) <= kStillReach * t.box().height &&
+           std::hypot(t.cx.v, t.cy.v) <= kStillSpeed * t.h.x;
+}
+
 void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
 {
     // The scene's motion is learnt from a detector's boxes (the pixels'
@@ -237,7 +247,14 @@ void Engine::update(Track &t, const ct_detection &d, int index, int64_t t_us)
     }
     // A detector's box is trusted as much as its score's boxes earned.
     const double f = by_score_ ? state_.learnt.score_noise.factor(d.score) : 1.0;
-    t.correct(d, cfg_.detection_noise * f, shown_noise * f, index, t_us);
+    ct_detection kept = d;
+    if (kStillFragment > 0 && t.state == CT_TRACK_CONFIRMED && d.score < high_ &&
+        d.height < kStillFragment * t.h.x && standing(t)) {
+        const Box b = t.box();
+        kept.top = (float)b.top;
+        kept.height = (float)b.height;
+    }
+    t.correct(kept, cfg_.detection_noise * f, shown_noise * f, index, t_us);
     if (t.state == CT_TRACK_LOST)
         t.state = CT_TRACK_CONFIRMED;
     else if (t.state == CT_TRACK_TENTATIVE && t.hits >= cfg_.min_hits &&

@@ -200,6 +200,9 @@ private:
     // that never moved and have not been alive for kObjectAfterS are
     // objects put down.
     void note_live(int64_t t_us);
+    // Whether a track is a person standing from the first frame, whom the
+    // background holds (follow_or_lose()).
+    bool standing(const Track &t) const;
     // Matches the tracks left in pool_tracks_ to the detections left in
     // pool_dets_ by their last detection's box instead of the prediction.
     void recover(const ct_detection *dets);
