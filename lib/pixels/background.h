@@ -64,10 +64,12 @@ public:
     double since_camera_moved_s(int64_t t_us) const;
     // The model as it was before the last apply() (and absorb()) is kept
     // until commit(): rollback() returns to it, so that a step that fails
-    // after the update leaves the model untouched. Both are O(1) and never
-    // throw.
-    // commit() also keeps the last frame's luma for live() once the one it
-    // keeps is kLiveSpanS old.
+    // after the update leaves the model untouched. rollback() is O(1) and
+    // never throws. commit() also keeps a copy of the last frame's luma for
+    // live() once the one it keeps is kLiveSpanS old: the copy's first
+    // allocation may throw std::bad_alloc, which leaves the kept frame as it
+    // was (Engine::step() calls it before the step, whose feed then fails
+    // and changes nothing).
     void commit();
     void rollback();
 
