@@ -26,7 +26,7 @@ namespace {
 constexpr int W = 160, H = 120;
 
 struct Gray {
-    int w = W, h = H; // fill() and square() draw on W x H frames
+    int w = W, h = H; // fill(), rect() and square() draw on W x H frames
     Vec<uint8_t> y = Vec<uint8_t>(W * H);
     Gray() = default;
     Gray(int width, int height) : w(width), h(height), y((size_t)width * height) {}
@@ -46,12 +46,13 @@ struct Gray {
             for (int c = 0; c < W; c++)
                 y[r * W + c] = (uint8_t)(level + (r * 7 + c * 13) % 5); // a little texture
     }
-    void square(int x0, int y0, int size, int level)
+    void rect(int x0, int y0, int width, int height, int level)
     {
-        for (int r = y0; r < y0 + size; r++)
-            for (int c = x0; c < x0 + size; c++)
+        for (int r = y0; r < y0 + height; r++)
+            for (int c = x0; c < x0 + width; c++)
                 y[r * W + c] = (uint8_t)level;
     }
+    void square(int x0, int y0, int size, int level) { rect(x0, y0, size, size, level); }
 };
 
 // The timestamp of frame k (from 0) at 25 frames/s, or at `fps`.
@@ -387,6 +388,28 @@ START_TEST(stopped_person_under_a_track_is_not_absorbed)
 }
 END_TEST
 
+// Stripes 4 pixels wide across rows [r0, r1) of the square of the tests
+// below, shifted by two pixels every other frame k.
+static void stripes(Gray &g, int k, int r0, int r1)
+{
+    for (int r = r0; r < r1; r++)
+        for (int c = 60; c < 100; c++)
+            g.y[r * W + c] = (uint8_t)(((c + 2 * (k % 2)) / 4) % 2 ? 120 : 200);
+}
+
+// Background::live() over the square at (60, 40), 40 pixels a side, which
+// appeared in the first frame: its blob is the square, whatever the model
+// holds.
+static bool square_live(const Background &bg)
+{
+    const int s = Background::kStartScale;
+    Vec<uint8_t> blob((size_t)bg.width() * bg.height(), 0);
+    for (int r = 40 / s; r < 80 / s; r++)
+        for (int c = 60 / s; c < 100 / s; c++)
+            blob[(size_t)r * bg.width() + c] = 255;
+    return bg.live(blob.data(), Rect{60 / s, 40 / s, 100 / s, 80 / s});
+}
+
 // Motion inside a blob (Background::live()): a square that stands still
 // is not alive, nor with sensor noise over the frame; one whose inside
 // changes (a person's arms, a turned head: half its rows shifted by two
@@ -403,21 +426,12 @@ START_TEST(live_tells_a_stirring_blob_from_a_still_one)
             g.fill(100);
             g.square(60, 40, 40, 200);
             if (kind == 2 && k >= 30) // stripes that move inside the square
-                for (int r = 40; r < 80; r++)
-                    for (int c = 60; c < 100; c++)
-                        g.y[r * W + c] = (uint8_t)(((c + 2 * (k % 2)) / 4) % 2 ? 120 : 200);
+                stripes(g, k, 40, 80);
             if (kind == 1)
                 add_noise(g.y, &seed);
             bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
-            const int s = Background::kStartScale;
-            // The square appeared in the first frame: its blob is the
-            // square, whatever the model holds.
-            Vec<uint8_t> blob((size_t)bg.width() * bg.height(), 0);
-            for (int r = 40 / s; r < 80 / s; r++)
-                for (int c = 60 / s; c < 100 / s; c++)
-                    blob[(size_t)r * bg.width() + c] = 255;
             if (k >= 31)
-                live |= bg.live(blob.data(), Rect{60 / s, 40 / s, 100 / s, 80 / s});
+                live |= square_live(bg);
         }
         ck_assert_msg(live == (kind == 2), "kind %d: live %d", kind, live);
     }
@@ -441,23 +455,15 @@ START_TEST(live_reads_a_slow_stir_against_a_kept_frame)
             g.fill(100);
             g.square(60, 40, 40, 200);
             const int ramp = k < 30 ? 0 : (k - 30) % 32 < 16 ? (k - 30) % 32 : 32 - (k - 30) % 32;
-            for (int r = 40; r < 60; r++)
-                for (int c = 60; c < 100; c++) {
-                    if (kind == 0)
-                        g.y[r * W + c] = (uint8_t)(120 + 8 * ramp);
-                    else if (kind == 1 && k >= 30)
-                        g.y[r * W + c] = (uint8_t)((c + 2 * (k % 2)) / 4 % 2 ? 120 : 200);
-                }
+            if (kind == 0)
+                g.rect(60, 40, 40, 20, (uint8_t)(120 + 8 * ramp));
+            else if (kind == 1 && k >= 30)
+                stripes(g, k, 40, 60);
             bg.commit();
             bg.apply(at(k), g.planes(), Background::kStartScale, nullptr, 0);
-            const int s = Background::kStartScale;
-            Vec<uint8_t> blob((size_t)bg.width() * bg.height(), 0);
-            for (int r = 40 / s; r < 80 / s; r++)
-                for (int c = 60 / s; c < 100 / s; c++)
-                    blob[(size_t)r * bg.width() + c] = 255;
             if (k >= 31) {
                 steps++;
-                live += bg.live(blob.data(), Rect{60 / s, 40 / s, 100 / s, 80 / s});
+                live += square_live(bg);
             }
         }
         // The slow stir: alive in most frames (against a frame 1 to 8

@@ -545,8 +545,7 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
         noise_samples_.begin();
     update_rows(img, frozen, n_frozen, r, u, sample);
     have_last_ = keep_luma_ && !u.restart && !u.rescale && old_luma_.size() == luma_.size();
-    have_ref_ = have_last_ && ref_luma_.size() == luma_.size() && ref_scale_ == scale_ &&
-                ref_start_us_ == start_us_;
+    have_ref_ = have_last_ && ref_matches();
     live_level_ = r.vmin;
     // The camera, against the frame before at the same scale and size.
     constexpr int kReach = 8;
@@ -670,6 +669,12 @@ void Background::keep_luma(bool on)
             Vec<uint8_t>(v->get_allocator()).swap(*v);
 }
 
+bool Background::ref_matches() const
+{
+    return ref_luma_.size() == luma_.size() && ref_scale_ == scale_ &&
+           ref_start_us_ == start_us_;
+}
+
 void Background::commit()
 {
     kept_ = false;
@@ -677,8 +682,7 @@ void Background::commit()
     // the one kept is kLiveSpanS old.
     if (!keep_luma_ || frames_ == 0 || luma_.size() != (size_t)w_ * h_)
         return;
-    const bool same = ref_luma_.size() == luma_.size() && ref_scale_ == scale_ &&
-                      ref_start_us_ == start_us_;
+    const bool same = ref_matches();
     if (same && last_us_ >= ref_us_ && last_us_ - ref_us_ < std::llround(kLiveSpanS * 1e6))
         return;
     ref_luma_.assign(luma_.begin(), luma_.end());

@@ -194,6 +194,9 @@ private:
     int64_t ref_us_ = 0, ref_start_us_ = 0;
     int ref_scale_ = 0;
     bool have_ref_ = false;
+    // Whether the kept frame was read at this frame's size and scale, since
+    // the model's last start.
+    bool ref_matches() const;
     bool motion_ready_ = false;
     Vec<uint8_t> motion_;
     int live_level_ = 0;
