@@ -681,6 +681,43 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 }
 END_TEST
 
+// A walker in mid-stride: the same head and torso as draw_standing() (head
+// at row 60), the front leg straight down to row 151 and the rear leg
+// slanting back to a foot on row 159, its columns 34-40, some 12 columns
+// (0.12 of the person's height) left of the body's axis at column 49.
+static void draw_striding(uint8_t *m)
+{
+    draw_standing(m, 60, false);
+    for (int y = 135; y < 160; y++)
+        for (int x = 40; x < 60; x++)
+            m[y * 100 + x] = 0;
+    for (int y = 135; y < 152; y++)
+        for (int x = 51; x < 59; x++)
+            m[y * 100 + x] = 255;
+    for (int y = 135; y < 160; y++) {
+        const int x0 = 42 - (y - 135) * 9 / 25; // the rear leg, slanting back
+        for (int x = x0; x < x0 + 7; x++)
+            m[y * 100 + x] = 255;
+    }
+}
+
+// The feet are sought across a stride: a detector's box from the head to
+// the rear foot keeps its bottom there, not at the front foot near the
+// axis, 8 rows higher (a band of 0.1 box heights each side of the axis
+// found that one, and the box's bottom moved 5.6 rows up).
+START_TEST(fit_finds_the_feet_across_a_stride)
+{
+    static uint8_t m[100 * 200];
+    draw_striding(m);
+    const Box b{33, 60, 30, 100};
+    Box out;
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, nullptr, true, &out));
+    ck_assert_msg(std::fabs(out.top + out.height - 160) <= 1, "bottom at %.1f, the feet at 160",
+                  out.top + out.height);
+    ck_assert_double_eq_tol(out.top, 60, 1);
+}
+END_TEST
+
 // A box cut short of a person grows to the height a person whose head is at
 // its top has, only where the people's line holds that height at their
 // feet (PersonSize::line_holds_at()): with a slope near 1, the height
@@ -797,6 +834,7 @@ int main(void)
     tcase_add_test(tc, filter_learns_a_constant_velocity);
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
+    tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);
     tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
     tcase_add_test(tc, a_box_where_the_size_is_held_at_its_bound_is_not_cut);

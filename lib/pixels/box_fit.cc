@@ -17,11 +17,14 @@ constexpr double kReach = 0.1;
 // The body's axis: the median column of the foreground in the rows from
 // kAxisTop to kAxisBottom of the box (the torso, not the swinging legs);
 // the head is sought within kHeadBand box heights of it (a head is about
-// a tenth of a person's height across), the feet within kAxisBand.
-constexpr double kAxisTop = 0.1, kAxisBottom = 0.6, kHeadBand = 0.05, kAxisBand = 0.1;
+// a tenth of a person's height across), the feet within kFeetBand: a
+// walker's feet are up to a third of their height apart in a stride, and
+// a narrower band sees the front foot only, the box's bottom too high.
+constexpr double kAxisTop = 0.1, kAxisBottom = 0.6, kHeadBand = 0.05, kFeetBand = 0.15;
 // The head's top: the first row whose share of foreground on the axis
-// reaches kHeadFill; the feet: the last that reaches kFeetFill.
-constexpr double kHeadFill = 0.3, kFeetFill = 0.2;
+// reaches kHeadFill; the feet: the last that reaches kFeetFill (over the
+// band's 0.3 box heights, a foot's width).
+constexpr double kHeadFill = 0.3, kFeetFill = 0.1;
 // The box holds one person's silhouette clearly when its foreground share
 // is in [kMinFill, kMaxFill]; the head-to-feet extent is taken when it is
 // kMinHeight to kMaxHeight of the box's height.
@@ -171,7 +174,7 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
     // The head's top and the feet on the axis.
     const int head_band = std::max(1, (int)(kHeadBand * b.height / v.s));
-    const int band = std::max(1, (int)(kAxisBand * b.height / v.s));
+    const int band = std::max(1, (int)(kFeetBand * b.height / v.s));
     const int c0 = std::max(x0, axis - band), c1 = std::min(x1, axis + band + 1);
     const int h0 = std::max(x0, axis - head_band), h1 = std::min(x1, axis + head_band + 1);
     int top = -1;
