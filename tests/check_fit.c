@@ -2,8 +2,9 @@
  * frames with a detector's boxes: a box cut at the chest, where the coat is
  * the colour of the ground, grows to the feet; a box 30% too wide is
  * narrowed, one that runs past the feet ends near them, one that starts
- * far above the head ends at it, and a faint
- * person's box is narrowed as the detector's others were; on a
+ * far above the head ends at it (and at the feet, cut to one person and
+ * fitted again), a faint person's box is narrowed as the detector's
+ * others were, and one too loose to read is read again so narrowed; on a
  * camera that pans, the boxes are as without the fit. */
 #include <math.h>
 #include <stdbool.h>
@@ -251,6 +252,22 @@ START_TEST(a_box_taller_than_a_person_ends_at_the_head)
 }
 END_TEST
 
+START_TEST(a_box_cut_to_one_person_is_fitted_again)
+{
+    /* A detector's box from a third of the person's height above their
+     * head to an eighth of it past their feet: cut to one person from its
+     * bottom row up, it would end that eighth below the feet and start as
+     * far below the head. The cut box is fitted as one person's: head to
+     * feet. */
+    scene s;
+    person *p = crowd_and(&s, newcomer(60, 1.12, 1));
+    p->box_above = 0.35;
+    fit_and_not(&s);
+    ck_assert_float_ge(s.raw->top + s.raw->height, p->feet + 0.1 * p->height);
+    assert_head_to_feet(s.fit, p);
+}
+END_TEST
+
 START_TEST(a_faint_person_takes_the_detectors_learnt_width)
 {
     /* A detector whose boxes are all 1.4 times too wide. The fit narrows
@@ -271,6 +288,32 @@ START_TEST(a_faint_person_takes_the_detectors_learnt_width)
     ck_assert_msg(fabs(fit->left + fit->width / 2 - (raw->left + raw->width / 2)) < 0.1 * w,
                   "centre %g, unfitted %g", fit->left + fit->width / 2,
                   raw->left + raw->width / 2);
+}
+END_TEST
+
+START_TEST(a_loose_box_is_read_again_at_the_learnt_width)
+{
+    /* A detector whose boxes are 1.6 times too wide: the fit narrows the
+     * crowd's and learns it. The person under test gets a box 3 times
+     * their width and a third of their width to their right, so loose
+     * that they fill under 30% of it and the fit cannot read it; narrowed
+     * as the detector's others were, it is read again there, and ends
+     * about as wide as the person and most of the way to their centre.
+     * Narrowed alone, it would stay 2.2 times their width, as far off. */
+    scene s;
+    person *p = crowd_and(&s, newcomer(60, 1, 3));
+    p->box_shift = 0.35;
+    for (int i = 0; i < s.n - 1; i++)
+        s.ps[i].box_wide = 1.6;
+    fit_and_not(&s);
+    const double x = centre_at(p, 89), w = width_of(p);
+    const double raw_off = s.raw->left + s.raw->width / 2 - x;
+    const double fit_off = s.fit->left + s.fit->width / 2 - x;
+    ck_assert_float_ge(s.raw->width, 2.9 * w);
+    ck_assert_msg(s.fit->width <= 1.3 * w && s.fit->width >= 0.7 * w, "width %g, person %g",
+                  s.fit->width, w);
+    ck_assert_msg(raw_off > 0.3 * w, "unfitted %g off", raw_off);
+    ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted %g off, unfitted %g", fit_off, raw_off);
 }
 END_TEST
 
@@ -347,7 +390,9 @@ int main(void)
     tcase_add_test(tc, too_wide_is_narrowed);
     tcase_add_test(tc, past_the_feet_ends_at_the_feet);
     tcase_add_test(tc, a_box_taller_than_a_person_ends_at_the_head);
+    tcase_add_test(tc, a_box_cut_to_one_person_is_fitted_again);
     tcase_add_test(tc, a_faint_person_takes_the_detectors_learnt_width);
+    tcase_add_test(tc, a_loose_box_is_read_again_at_the_learnt_width);
     tcase_add_test(tc, a_moving_camera_is_left_alone);
     tcase_add_test(tc, a_box_to_the_side_moves_to_the_person);
     tcase_add_test(tc, clipped_boxes_stay_in_the_image);

@@ -860,6 +860,14 @@ void Engine::fit_reported(ImageSize image)
     auto box_of = [](const ct_track &o) { return Box{o.left, o.top, o.width, o.height}; };
     // Each box is fitted against the others as they were before the fit:
     // the fitted ones are written once all are known.
+    // A detector's box changed without its silhouette (to the learnt
+    // mean, or cut to one person) is fitted again from there, and stays
+    // as changed where the fit cannot read it.
+    auto refit = [&](Box *x) {
+        Box again;
+        if (pixels_.fit(*x, state_.learnt.size, true, &again))
+            *x = again;
+    };
     fitted_.resize(rows.size());
     for (size_t i = 0; i < rows.size(); i++) {
         const Box b = box_of(rows[i]);
@@ -882,13 +890,23 @@ void Engine::fit_reported(ImageSize image)
             // Learnt as fitted, before any clipping at the image's edge.
             if (detector)
                 state_.learnt.fit_bias.learn(b, fitted_[i]);
-        } else {
+        } else if (detector) {
             // No silhouette to read: a detector's box takes what the fit
-            // does to its boxes on average.
-            fitted_[i] = detector ? state_.learnt.fit_bias.apply(b) : b;
+            // does to its boxes on average. A box too loose for the fit
+            // (its person under 30% of it) is read again at that size,
+            // where the person fills it as they fill the detector's usual
+            // box; not learnt from, since it starts from what was learnt.
+            fitted_[i] = state_.learnt.fit_bias.apply(b);
+            if (state_.learnt.fit_bias.known())
+                refit(&fitted_[i]);
+        } else {
+            fitted_[i] = b;
         }
-        if (detector)
-            cut_to_one_person(state_.learnt.size, &fitted_[i]);
+        // A box cut to the one person whose feet are its bottom is that
+        // person's: the fit before the cut read the joined extent and
+        // moved it neither up nor down.
+        if (detector && cut_to_one_person(state_.learnt.size, &fitted_[i]))
+            refit(&fitted_[i]);
         if (!clip_box(image, &fitted_[i]))
             fitted_[i] = b;
     }
