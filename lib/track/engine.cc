@@ -858,8 +858,6 @@ void Engine::fit_reported(ImageSize image)
     // pixels' own are the blobs' extents already.
     const bool detector = cfg_.source == CT_SOURCE_DETECTIONS;
     auto box_of = [](const ct_track &o) { return Box{o.left, o.top, o.width, o.height}; };
-    // Each box is fitted against the others as they were before the fit:
-    // the fitted ones are written once all are known.
     // A detector's box changed without its silhouette (to the learnt
     // mean, or cut to one person) is fitted again from there, and stays
     // as changed where the fit cannot read it.
@@ -868,6 +866,8 @@ void Engine::fit_reported(ImageSize image)
         if (pixels_.fit(*x, state_.learnt.size, true, &again))
             *x = again;
     };
+    // Each box is fitted against the others as they were before the fit:
+    // the fitted ones are written once all are known.
     fitted_.resize(rows.size());
     for (size_t i = 0; i < rows.size(); i++) {
         const Box b = box_of(rows[i]);
