@@ -117,7 +117,7 @@ def main():
     row("... ctrack reported no other box over it", covered & (our_share == 0))
     row("... ctrack's boxes overlap, under a sixth", covered & (our_share > 0) &
         (our_share <= COVER))
-    row("... ctrack's boxes overlap, more (left unfitted)", covered & (our_share > COVER))
+    row("... ctrack's boxes overlap, more (fitted only in front)", covered & (our_share > COVER))
     uncovered = gt_share == 0
     print("\nThe uncovered pairs: median %.2f%%, %.1f%% of them over 10%% holding %.2f "
           "points of the mean; with the covered pairs' centres right in height: %.2f%%."

@@ -3,7 +3,8 @@
  * the colour of the ground, grows to the feet; a box 30% too wide is
  * narrowed, one that runs past the feet ends near them, one that starts
  * far above the head ends at it (and at the feet, cut to one person and
- * fitted again), a faint person's box is narrowed as the detector's
+ * fitted again), a person in front of another is fitted from the rows
+ * below the other's box, a faint person's box is narrowed as the detector's
  * others were, and one too loose to read is read again so narrowed; on a
  * camera that pans, the boxes are as without the fit. */
 #include <math.h>
@@ -196,6 +197,17 @@ static void assert_head_to_feet(const ct_track *b, const person *p)
                   b->top + b->height, feet);
 }
 
+/* p's box a fifth of its width to the right: unfitted, more than 0.15 of
+ * its width off its centre; fitted, under half as far. */
+static void assert_moved_back(const scene *s, const person *p)
+{
+    const double x = centre_at(p, 89), w = width_of(p);
+    const double raw_off = s->raw->left + s->raw->width / 2 - x;
+    const double fit_off = s->fit->left + s->fit->width / 2 - x;
+    ck_assert_msg(raw_off > 0.15 * w, "unfitted %g off", raw_off);
+    ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted %g off, unfitted %g", fit_off, raw_off);
+}
+
 START_TEST(cut_at_the_chest_grows_to_the_feet)
 {
     scene s;
@@ -263,6 +275,27 @@ START_TEST(a_box_cut_to_one_person_is_fitted_again)
     person *p = crowd_and(&s, newcomer(60, 1.12, 1));
     p->box_above = 0.35;
     fit_and_not(&s);
+    ck_assert_float_ge(s.raw->top + s.raw->height, p->feet + 0.1 * p->height);
+    assert_head_to_feet(s.fit, p);
+}
+END_TEST
+
+START_TEST(a_person_in_front_is_fitted_from_below_the_other)
+{
+    /* Two people walking together, one behind the other: the box of the
+     * one behind covers the top of the front one's, whose detector box
+     * sits a fifth of their width to the right and runs an eighth of their
+     * height past their feet. The rows below the other box are the front
+     * person's alone: the fit moves the box most of the way back across,
+     * and to head and feet. Without the fit it stays where it was given. */
+    scene s;
+    crowd_and(&s, (person){.x = 232, .feet = 180, .height = 0.7 * 180 - 40, .speed = -0.8,
+                           .enter = 60, .box_cut = 1, .box_wide = 1.5});
+    person *p = &s.ps[s.n++];
+    *p = newcomer(60, 1.12, 1);
+    p->box_shift = 0.2;
+    fit_and_not(&s);
+    assert_moved_back(&s, p);
     ck_assert_float_ge(s.raw->top + s.raw->height, p->feet + 0.1 * p->height);
     assert_head_to_feet(s.fit, p);
 }
@@ -343,11 +376,7 @@ START_TEST(a_box_to_the_side_moves_to_the_person)
     person *p = crowd_and(&s, newcomer(60, 1, 1));
     p->box_shift = 0.2;
     fit_and_not(&s);
-    const double x = centre_at(p, 89), w = width_of(p);
-    const double raw_off = s.raw->left + s.raw->width / 2 - x;
-    const double fit_off = s.fit->left + s.fit->width / 2 - x;
-    ck_assert_msg(raw_off > 0.15 * w, "unfitted %g off", raw_off);
-    ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted %g off, unfitted %g", fit_off, raw_off);
+    assert_moved_back(&s, p);
 }
 END_TEST
 
@@ -391,6 +420,7 @@ int main(void)
     tcase_add_test(tc, past_the_feet_ends_at_the_feet);
     tcase_add_test(tc, a_box_taller_than_a_person_ends_at_the_head);
     tcase_add_test(tc, a_box_cut_to_one_person_is_fitted_again);
+    tcase_add_test(tc, a_person_in_front_is_fitted_from_below_the_other);
     tcase_add_test(tc, a_faint_person_takes_the_detectors_learnt_width);
     tcase_add_test(tc, a_loose_box_is_read_again_at_the_learnt_width);
     tcase_add_test(tc, a_moving_camera_is_left_alone);

@@ -301,8 +301,9 @@ typedef struct ct_config {
      * are at its bottom becomes that person. Where
      * the silhouette does not show one person clearly (the background
      * model's first second, the second after the camera moved, another
-     * track over a sixth of the box) the box is left as it is; a
-     * detector's box too faint in the foreground to fit takes what the
+     * track over a sixth of the box) the box is left as it is, but for a
+     * detector's box whose person is in front of the other, fitted from
+     * the rows below the other's; a detector's box too faint in the foreground to fit takes what the
      * fit did to that detector's boxes on average. With detections it
      * makes the tracker keep a background model, about 0.2 ms a 768x576
      * frame. 0 reports the boxes unfitted and, with detections, reads no

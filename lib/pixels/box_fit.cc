@@ -48,6 +48,11 @@ constexpr double kCut = 0.75, kFeetReach = 1.2;
 // stride included). A box wider than kWidthMargin times that is narrowed
 // to it: a detector's boxes are often looser than a person.
 constexpr double kColumnFill = 0.1, kWidthMargin = 1.2;
+// A box whose top another covers is its person's in front where its bottom
+// is kFrontRows of its height below the other's, and the rows there are
+// read where kFrontFill of them is foreground (docs/tuning.md, "The person
+// in front").
+constexpr double kFrontRows = 0.05, kFrontFill = 0.1;
 constexpr int kMaxColumns = 1024;
 // FitBias: boxes learnt before the mean is used, and the number of boxes
 // the mean is over once it runs.
@@ -80,6 +85,23 @@ struct View {
     int col(double v) const { return std::min(w, std::max(0, (int)v)); }
     int row(double v) const { return std::min(h, std::max(0, (int)v)); }
 };
+
+// The foreground in each column of [x0, x1) over rows [y0, y1), into
+// counts[0 .. x1 - x0 - 1] (x1 - x0 <= kMaxColumns); returns their sum.
+long column_counts(const View &v, int x0, int x1, int y0, int y1, int *counts)
+{
+    std::fill(counts, counts + (x1 - x0), 0);
+    long total = 0;
+    for (int y = y0; y < y1; y++) {
+        const uint8_t *r = v.mask + (size_t)y * v.w;
+        for (int x = x0; x < x1; x++)
+            if (r[x]) {
+                counts[x - x0]++;
+                total++;
+            }
+    }
+    return total;
+}
 
 // The last row in [y0, y1) whose share on the axis reaches kFeetFill, or -1.
 int feet_row(const View &v, int y0, int y1, int c0, int c1)
@@ -157,18 +179,10 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     if (fill < kMinFill || fill > kMaxFill)
         return false;
     // The body's axis and width, from the torso's rows.
-    int counts[kMaxColumns] = {};
-    long total = 0;
+    int counts[kMaxColumns];
     const int ay0 = by0 + (int)(kAxisTop * (by1 - by0));
     const int ay1 = std::max(ay0 + 1, by0 + (int)(kAxisBottom * (by1 - by0)));
-    for (int y = ay0; y < ay1; y++) {
-        const uint8_t *r = mask + (size_t)y * w;
-        for (int x = x0; x < x1; x++)
-            if (r[x]) {
-                counts[x - x0]++;
-                total++;
-            }
-    }
+    const long total = column_counts(v, x0, x1, ay0, ay1, counts);
     if (total < 5)
         return false;
     const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
@@ -217,6 +231,42 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     if (extent && detector)
         out->height = b.height + follow * (tall - b.height);
     out->top = cy - out->height / 2;
+    return true;
+}
+
+bool fit_in_front(const uint8_t *mask, int w, int h, int scale, const Box &b,
+                  double cover_bottom, double follow, const PersonSize *size, Box *out)
+{
+    const double bottom = b.top + b.height;
+    if (!(b.width > 0 && b.height > 0) || scale < 1 ||
+        !(bottom - cover_bottom >= kFrontRows * b.height))
+        return false;
+    *out = b;
+    // The rows of the person alone, to the reach below the box.
+    const View v{mask, w, h, (double)scale};
+    const int x0 = v.col(std::floor(b.left / v.s));
+    const int x1 = v.col(std::ceil((b.left + b.width) / v.s));
+    const int y0 = v.row(std::ceil(cover_bottom / v.s));
+    const int y1 = v.row(std::ceil((bottom + kReach * b.height) / v.s));
+    int counts[kMaxColumns];
+    const long total = x1 - x0 >= 4 && x1 - x0 <= kMaxColumns && y1 - y0 >= 3
+                           ? column_counts(v, x0, x1, y0, y1, counts)
+                           : 0;
+    if (total >= 5 && total >= kFrontFill * (x1 - x0) * (y1 - y0)) {
+        const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
+        out->left += follow * ((axis + 0.5) * v.s - (b.left + b.width / 2));
+        const int band = std::max(1, (int)(kFeetBand * b.height / v.s));
+        const int feet = feet_row(v, y0, y1, std::max(x0, axis - band),
+                                  std::min(x1, axis + band + 1));
+        // Feet on the image's last row may be cut by its edge.
+        if (feet >= 0 && feet < h - 1)
+            out->top += follow * ((feet + 1) * v.s - bottom);
+    }
+    const double feet_y = out->top + out->height;
+    if (size && size->speaks_at(feet_y) && size->line_holds_at(feet_y)) {
+        out->height = size->height_at(feet_y);
+        out->top = feet_y - out->height;
+    }
     return true;
 }
 

@@ -33,6 +33,17 @@ constexpr double kFitFollow = 0.7;
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out);
 
+// A detector's box whose top another box covers, its person in front
+// (their feet below the other box's bottom, `cover_bottom`, by kFrontRows
+// of its height or more): the rows below the other box are its person's
+// alone. Its centre moves `follow` of the way across to the axis of the
+// foreground in those rows (between the legs) and down or up to the feet
+// found there; it then takes the height of a person whose feet are at its
+// bottom, where the people's size (`size`, or null) speaks there. False,
+// *out untouched, where the person is not in front.
+bool fit_in_front(const uint8_t *mask, int w, int h, int scale, const Box &b,
+                  double cover_bottom, double follow, const PersonSize *size, Box *out);
+
 // A detector's box more than a tenth taller than a person whose feet are
 // at its bottom row (where the people's size speaks, and its line is its
 // own, not held at its bounds: PersonSize::line_holds_at()) is not one

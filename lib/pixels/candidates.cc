@@ -339,6 +339,14 @@ bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool detector, B
                                  background_.scale(), b, kFitFollow, &size, detector, out);
 }
 
+bool PixelCandidates::fit_in_front(const Box &b, double cover_bottom, const PersonSize &size,
+                                   Box *out) const
+{
+    return have_mask_ && ctrack::fit_in_front(blobs_.cleaned(), background_.width(),
+                                              background_.height(), background_.scale(), b,
+                                              cover_bottom, kFitFollow, &size, out);
+}
+
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const
 {
     *w = background_.width();

@@ -53,6 +53,9 @@ public:
     bool silhouettes_clear(int64_t t_us) const;
     // Box b fitted to this step's silhouette (fit_box()), or false.
     bool fit(const Box &b, const PersonSize &size, bool detector, Box *out) const;
+    // Box b, whose top a box with its bottom at `cover_bottom` covers,
+    // fitted to this step's silhouette below that (fit_in_front()), or false.
+    bool fit_in_front(const Box &b, double cover_bottom, const PersonSize &size, Box *out) const;
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part

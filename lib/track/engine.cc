@@ -851,7 +851,7 @@ void Engine::report(int64_t t_us, ImageSize image)
 void Engine::fit_reported(ImageSize image)
 {
     // Where another track covers more than this of a box, its silhouette
-    // is not its own.
+    // is its own only below the other box, and only if it is in front.
     constexpr double kMaxCovered = 1.0 / 6;
     Vec<ct_track> &rows = state_.reported;
     // A detector's boxes are often looser or taller than a person; the
@@ -871,8 +871,8 @@ void Engine::fit_reported(ImageSize image)
     fitted_.resize(rows.size());
     for (size_t i = 0; i < rows.size(); i++) {
         const Box b = box_of(rows[i]);
-        bool covered = false;
-        for (size_t j = 0; j < rows.size() && !covered; j++) {
+        const ct_track *cover = nullptr;
+        for (size_t j = 0; j < rows.size() && !cover; j++) {
             if (j == i)
                 continue;
             const Box o = box_of(rows[j]);
@@ -880,10 +880,19 @@ void Engine::fit_reported(ImageSize image)
                               std::max(b.left, o.left);
             const double iy = std::min(b.top + b.height, o.top + o.height) -
                               std::max(b.top, o.top);
-            covered = ix > 0 && iy > 0 && ix * iy > kMaxCovered * b.width * b.height;
+            if (ix > 0 && iy > 0 && ix * iy > kMaxCovered * b.width * b.height)
+                cover = &rows[j];
         }
-        if (covered) {
-            fitted_[i] = b;
+        if (cover) {
+            // Only the legs of a detector's person in front are theirs
+            // alone to read. A blob's box is its extent already, and
+            // moved by them it tracks groups worse (docs/tuning.md, "The
+            // person in front").
+            if (!detector ||
+                !pixels_.fit_in_front(b, (double)cover->top + cover->height,
+                                      state_.learnt.size, &fitted_[i]) ||
+                !clip_box(image, &fitted_[i]))
+                fitted_[i] = b;
             continue;
         }
         if (pixels_.fit(b, state_.learnt.size, detector, &fitted_[i])) {
