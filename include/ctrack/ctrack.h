@@ -303,8 +303,9 @@ typedef struct ct_config {
      * model's first second, the second after the camera moved, another
      * track over a sixth of the box) the box is left as it is, but for a
      * detector's box whose person is in front of the other, fitted from
-     * the rows below the other's; a detector's box too faint in the foreground to fit takes what the
-     * fit did to that detector's boxes on average. With detections it
+     * the rows below the other's; a detector's box too faint in the
+     * foreground to fit takes what the fit did to that detector's boxes on
+     * average. With detections it
      * makes the tracker keep a background model, about 0.2 ms a 768x576
      * frame. 0 reports the boxes unfitted and, with detections, reads no
      * background (docs/API.md, "Boxes fitted to the silhouette").
