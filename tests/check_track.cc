@@ -718,6 +718,37 @@ START_TEST(fit_finds_the_feet_across_a_stride)
 }
 END_TEST
 
+// A box whose top another box covers is read below that box where its
+// person is in front: across to the legs' axis (column 50) and to the feet
+// (row 160), then a person's height there where the size speaks. Not where
+// its bottom is above the other's, nor at a cover's bottom that is no
+// number.
+START_TEST(fit_in_front_reads_below_the_other_box)
+{
+    static uint8_t m[100 * 200];
+    draw_standing(m, 60, false);
+    const Box b{36, 60, 36, 110}; // centre 54, bottom 170
+    Box out;
+    ck_assert(fit_in_front(m, 100, 200, 1, b, 120, 1, nullptr, &out));
+    ck_assert_double_eq_tol(out.left + out.width / 2, 50, 1);
+    ck_assert_double_eq_tol(out.top + out.height, 160, 1);
+    ck_assert_double_eq_tol(out.height, 110, 1e-9);
+    PersonSize size;
+    size.reset(200);
+    learn_line(size, 0.6, 0);
+    ck_assert(fit_in_front(m, 100, 200, 1, b, 120, 1, &size, &out));
+    ck_assert_double_eq_tol(out.top + out.height, 160, 1);
+    ck_assert_double_eq_tol(out.height, size.height_at(out.top + out.height), 1e-9);
+    const Box untouched = out;
+    ck_assert(!fit_in_front(m, 100, 200, 1, b, 175, 1, &size, &out));
+    ck_assert(!fit_in_front(m, 100, 200, 1, b, std::nan(""), 1, &size, &out));
+    ck_assert(!fit_in_front(m, 100, 200, 1, Box{36, 60, std::nan(""), 110}, 120, 1, &size,
+                            &out));
+    ck_assert_double_eq(out.top, untouched.top);
+    ck_assert_double_eq(out.left, untouched.left);
+}
+END_TEST
+
 // A box cut short of a person grows to the height a person whose head is at
 // its top has, only where the people's line holds that height at their
 // feet (PersonSize::line_holds_at()): with a slope near 1, the height
@@ -835,6 +866,7 @@ int main(void)
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
+    tcase_add_test(tc, fit_in_front_reads_below_the_other_box);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);
     tcase_add_test(tc, a_box_over_more_than_one_person_is_cut_to_one);
     tcase_add_test(tc, a_box_where_the_size_is_held_at_its_bound_is_not_cut);
