@@ -72,6 +72,11 @@ int share_column(const int *counts, int n, long total, double share)
     return n - 1;
 }
 
+// Columns [c0, c1) of the mask.
+struct Band {
+    int c0, c1;
+};
+
 // The mask's rows and columns as the fit reads them.
 struct View {
     const uint8_t *mask;
@@ -84,6 +89,13 @@ struct View {
     }
     int col(double v) const { return std::min(w, std::max(0, (int)v)); }
     int row(double v) const { return std::min(h, std::max(0, (int)v)); }
+    // The columns within `reach` frame pixels of column `axis` (at least
+    // one each side), clipped to [x0, x1).
+    Band around(int axis, double reach, int x0, int x1) const
+    {
+        const int n = std::max(1, (int)(reach / s));
+        return {std::max(x0, axis - n), std::min(x1, axis + n + 1)};
+    }
 };
 
 // The foreground in each column of [x0, x1) over rows [y0, y1), into
@@ -187,20 +199,18 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
         return false;
     const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
     // The head's top and the feet on the axis.
-    const int head_band = std::max(1, (int)(kHeadBand * b.height / v.s));
-    const int band = std::max(1, (int)(kFeetBand * b.height / v.s));
-    const int c0 = std::max(x0, axis - band), c1 = std::min(x1, axis + band + 1);
-    const int h0 = std::max(x0, axis - head_band), h1 = std::min(x1, axis + head_band + 1);
+    const Band head = v.around(axis, kHeadBand * b.height, x0, x1);
+    const Band feet = v.around(axis, kFeetBand * b.height, x0, x1);
     int top = -1;
     for (int y = y0; y < y1 && top < 0; y++)
-        if (v.share(y, h0, h1) >= kHeadFill)
+        if (v.share(y, head.c0, head.c1) >= kHeadFill)
             top = y;
-    const int bottom = top < 0 ? -1 : feet_row(v, top, y1, c0, c1);
+    const int bottom = top < 0 ? -1 : feet_row(v, top, y1, feet.c0, feet.c1);
     if (top < 0 || bottom < top)
         return false;
     Box sized = b;
     if (size)
-        grow_cut(v, *size, c0, c1, &sized);
+        grow_cut(v, *size, feet.c0, feet.c1, &sized);
     const double sil_w = detector ? silhouette_width(v, x0, x1, by0, by1, axis) : 0;
     if (sil_w > 0 && sized.width > kWidthMargin * sil_w) {
         sized.left += (sized.width - kWidthMargin * sil_w) / 2;
@@ -255,9 +265,8 @@ bool fit_in_front(const uint8_t *mask, int w, int h, int scale, const Box &b,
     if (total >= 5 && total >= kFrontFill * (x1 - x0) * (y1 - y0)) {
         const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
         out->left += follow * ((axis + 0.5) * v.s - (b.left + b.width / 2));
-        const int band = std::max(1, (int)(kFeetBand * b.height / v.s));
-        const int feet = feet_row(v, y0, y1, std::max(x0, axis - band),
-                                  std::min(x1, axis + band + 1));
+        const Band band = v.around(axis, kFeetBand * b.height, x0, x1);
+        const int feet = feet_row(v, y0, y1, band.c0, band.c1);
         // Feet on the image's last row may be cut by its edge.
         if (feet >= 0 && feet < h - 1)
             out->top += follow * ((feet + 1) * v.s - bottom);
