@@ -16,7 +16,8 @@ tuning build (meson -Dtuning=true) reads CTRACK_NAME from the environment.
 Pixels only, or with --detections each sequence's public detections too
 (moved with the frames); -p passes ct-track a parameter (-p
 verify_detections=1). For each value, each sequence's mean and lowest MOTA /
-IDF1 over the family's variants (with --each, every variant's too); then,
+IDF1 over the family's variants, and its mean and highest barycenter error
+(with --each, every variant's MOTA / IDF1 too); then,
 leaving each sequence out in turn, the value with the best mean MOTA + IDF1
 on the others, and the one left out scored with it beside the shipped value
 (docs/tuning.md).
@@ -58,6 +59,7 @@ def main():
         scores = run_all(jobs, tmp, a.jobs, lambda k, n: print(
             "families: %d/%d runs" % (k, n), file=sys.stderr, flush=True))
     results = {k: (s["MOTA"], s["IDF1"]) for k, s in zip(keys, scores)}
+    bary = {k: s["barycenter_error"] for k, s in zip(keys, scores)}
 
     def per_seq(seq, v):
         return np.array([results[(seq, label, v)] for label, _, _ in variants])
@@ -72,6 +74,13 @@ def main():
         cells = ["%.1f / %.1f (%.1f / %.1f)" % (*per_seq(s, v).mean(0), *per_seq(s, v).min(0))
                  for s in seqs]
         print("| %s%s | %s |" % (v, " (shipped)" if v == shipped else "", " | ".join(cells)))
+    print("\nThe barycenter error, mean (highest) over the variants:\n")
+    print("| %s | %s |" % (name, " | ".join(seqs)))
+    print("|---|%s" % ("---|" * len(seqs)))
+    for v in values:
+        errs = [np.array([bary[(s, label, v)] for label, _, _ in variants]) for s in seqs]
+        print("| %s%s | %s |" % (v, " (shipped)" if v == shipped else "", " | ".join(
+            "%.2f%% (%.2f%%)" % (e.mean(), e.max()) for e in errs)))
     if a.each:
         print("\n| %s | variant | %s |" % (name, " | ".join(seqs)))
         print("|---|---|%s" % ("---|" * len(seqs)))

@@ -653,8 +653,11 @@ static void draw_standing(uint8_t *m, int top, bool behind)
 // The fit moves a box up or down to the silhouette's head-to-feet extent
 // only where that extent is one person's: with the people's size known
 // (96 pixels tall at feet row 160), an extent from another person's head
-// behind down to this one's feet (110 pixels) leaves the box where it was
-// vertically; without that head the same box is moved to the person.
+// behind down to this one's feet (110 pixels) does not move the box up.
+// A detector's box whose bottom is at those feet takes, `follow` of the
+// way, the height of a person standing there; one whose bottom is 20 rows
+// past them, and a blob's own box, keep their rows. Without that head the
+// box is moved to the person.
 START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 {
     PersonSize size;
@@ -669,10 +672,23 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
     // Without the size the joined extent (rows 50-159) moves the box up.
     ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, nullptr, true, &out));
     ck_assert_double_lt(out.top, b.top - 3);
-    // With it, the box keeps its rows.
+    // With it, the box keeps its bottom at the feet and shrinks toward a
+    // person standing there, its top moving down, not up.
     ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, &size, true, &out));
+    ck_assert_double_eq_tol(out.top + out.height, 160, 0.5);
+    ck_assert_double_eq_tol(out.height, b.height + kFitFollow * (size.height_at(160) - b.height),
+                            0.5);
+    ck_assert_double_gt(out.top, b.top + 1);
+    // A blob's own box is its extent already, and keeps its rows.
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, &size, false, &out));
     ck_assert_double_eq_tol(out.top, b.top, 0.5);
     ck_assert_double_eq_tol(out.height, b.height, 0.5);
+    // Its bottom 20 rows past the feet: neither the extent nor the feet
+    // are known to be this box's person's, and the box keeps its rows.
+    const Box past{36, 60, 28, 120};
+    ck_assert(fit_box(m, 100, 200, 1, past, kFitFollow, &size, true, &out));
+    ck_assert_double_eq_tol(out.top, past.top, 0.5);
+    ck_assert_double_eq_tol(out.height, past.height, 0.5);
     // One person alone, the box 8 rows too low: moved up toward the head.
     draw_standing(m, 64, false);
     const Box low{36, 72, 28, 96};

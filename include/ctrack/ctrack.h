@@ -298,7 +298,9 @@ typedef struct ct_config {
      * way to the silhouette's head to feet, and with the people's size
      * known a box cut short of a person's height grows to the feet and a
      * detector's box more than a tenth taller than a person whose feet
-     * are at its bottom becomes that person. Where
+     * are at its bottom becomes that person; one whose silhouette joins
+     * someone's head behind to its feet moves 0.7 of the way to the
+     * height of a person standing there. Where
      * the silhouette does not show one person clearly (the background
      * model's first second, the second after the camera moved, another
      * track over a sixth of the box) the box is left as it is, but for a

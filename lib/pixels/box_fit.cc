@@ -43,6 +43,11 @@ CT_TUNABLE(kOnePerson, "CTRACK_FIT_ONE_PERSON", 1.1);
 // occluder), and grows to the feet found below within kFeetReach of that
 // height, or to that height.
 constexpr double kCut = 0.75, kFeetReach = 1.2;
+// An extent taller than kOnePerson people whose feet lie within kFeetSlack
+// box heights of a detector's box's bottom holds this person's feet and
+// the head of someone behind: the box takes the height of a person
+// standing at those feet (docs/tuning.md, "The feet of a joined extent").
+CT_TUNABLE(kFeetSlack, "CTRACK_FEET_SLACK", 0.1);
 // The silhouette's width: the columns around the axis in which at least
 // kColumnFill of the box's rows are foreground (its arms and legs in
 // stride included). A box wider than kWidthMargin times that is narrowed
@@ -235,11 +240,22 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     const bool extent = !cut_foot && head_near && one_person && tall >= kMinHeight * b.height &&
                         tall <= kMaxHeight * b.height;
     const double mid = b.top + b.height / 2;
-    const double cy = mid + (extent ? follow * ((top + bottom + 1) * v.s / 2 - mid) : 0);
-    // A detector's box often runs past the feet or above the head; the
-    // pixels' own boxes are the blob's extent already.
-    if (extent && detector)
-        out->height = b.height + follow * (tall - b.height);
+    double cy = mid;
+    if (extent) {
+        cy += follow * ((top + bottom + 1) * v.s / 2 - mid);
+        // A detector's box often runs past the feet or above the head;
+        // the pixels' own boxes are the blob's extent already.
+        if (detector)
+            out->height = b.height + follow * (tall - b.height);
+    } else if (detector && !one_person && !cut_foot &&
+               std::fabs(feet_y - (b.top + b.height)) <= kFeetSlack * b.height &&
+               size->line_holds_at(feet_y)) {
+        // Not one person's extent (so the size speaks at its feet), but
+        // its feet are where the detector put this person's.
+        const double person = size->height_at(feet_y);
+        cy += follow * (feet_y - person / 2 - mid);
+        out->height = b.height + follow * (person - b.height);
+    }
     out->top = cy - out->height / 2;
     return true;
 }
