@@ -26,12 +26,12 @@ constexpr double kFitFollow = 0.7;
 // more than a tenth taller than a person whose feet are at its bottom is
 // not one person's (a head behind or feet in front joined to it): the
 // box is not moved up or down by it, but for a detector's box whose bottom
-// is at those feet, which takes the height of a person standing there
-// (someone's head behind it joined the extent). A `detector`'s box (not the
-// pixels' own, which is its blob's extent) much wider than the silhouette
-// is narrowed to it, and its height moves `follow` of the way to the
-// silhouette's head-to-feet extent where that is the whole person's; other
-// boxes keep their size.
+// is at those feet, which moves `follow` of the way to the height of a
+// person standing there (someone's head behind joined the extent). A
+// `detector`'s box (not the pixels' own, which is its blob's extent) much
+// wider than the silhouette is narrowed to it, and its height moves
+// `follow` of the way to the silhouette's head-to-feet extent where that
+// is the whole person's; other boxes keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out);
 
