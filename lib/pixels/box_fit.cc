@@ -45,7 +45,7 @@ CT_TUNABLE(kOnePerson, "CTRACK_FIT_ONE_PERSON", 1.1);
 constexpr double kCut = 0.75, kFeetReach = 1.2;
 // An extent taller than kOnePerson people whose feet lie within kFeetSlack
 // box heights of a detector's box's bottom holds this person's feet and
-// the head of someone behind: the box takes the height of a person
+// the head of someone behind: the box moves toward the height of a person
 // standing at those feet (docs/tuning.md, "The feet of a joined extent").
 CT_TUNABLE(kFeetSlack, "CTRACK_FEET_SLACK", 0.1);
 // The silhouette's width: the columns around the axis in which at least
@@ -75,6 +75,14 @@ int share_column(const int *counts, int n, long total, double share)
             return x;
     }
     return n - 1;
+}
+
+// The height of a person whose feet are at row `feet` (frame pixels),
+// where the people's size speaks there and its line is its own, not held
+// at its bounds (PersonSize::line_holds_at()); 0 elsewhere.
+double person_at_feet(const PersonSize &size, double feet)
+{
+    return size.speaks_at(feet) && size.line_holds_at(feet) ? size.height_at(feet) : 0;
 }
 
 // Columns [c0, c1) of the mask.
@@ -248,13 +256,14 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
         if (detector)
             out->height = b.height + follow * (tall - b.height);
     } else if (detector && !one_person && !cut_foot &&
-               std::fabs(feet_y - (b.top + b.height)) <= kFeetSlack * b.height &&
-               size->line_holds_at(feet_y)) {
-        // Not one person's extent (so the size speaks at its feet), but
-        // its feet are where the detector put this person's.
-        const double person = size->height_at(feet_y);
-        cy += follow * (feet_y - person / 2 - mid);
-        out->height = b.height + follow * (person - b.height);
+               std::fabs(feet_y - (b.top + b.height)) <= kFeetSlack * b.height) {
+        // Not one person's extent, but its feet are where the detector
+        // put this person's.
+        const double person = person_at_feet(*size, feet_y);
+        if (person > 0) {
+            cy += follow * (feet_y - person / 2 - mid);
+            out->height = b.height + follow * (person - b.height);
+        }
     }
     out->top = cy - out->height / 2;
     return true;
@@ -288,9 +297,10 @@ bool fit_in_front(const uint8_t *mask, int w, int h, int scale, const Box &b,
             out->top += follow * ((feet + 1) * v.s - bottom);
     }
     const double feet_y = out->top + out->height;
-    if (size && size->speaks_at(feet_y) && size->line_holds_at(feet_y)) {
-        out->height = size->height_at(feet_y);
-        out->top = feet_y - out->height;
+    const double person = size ? person_at_feet(*size, feet_y) : 0;
+    if (person > 0) {
+        out->height = person;
+        out->top = feet_y - person;
     }
     return true;
 }
@@ -300,9 +310,7 @@ bool cut_to_one_person(const PersonSize &size, Box *b)
     // Where the line is held at its bounds (PersonSize::max_height()), that
     // height is no measure of anyone: everyone taller would be cut to it.
     const double feet = b->top + b->height;
-    if (!size.speaks_at(feet) || !size.line_holds_at(feet))
-        return false;
-    const double tall = size.height_at(feet);
+    const double tall = person_at_feet(size, feet);
     if (!(tall > 0) || !(b->height > kOnePerson * tall))
         return false;
     b->top = feet - tall;
