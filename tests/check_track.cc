@@ -697,6 +697,48 @@ START_TEST(fit_moves_a_box_only_to_one_persons_extent)
 }
 END_TEST
 
+// A detector's box above its person and a little tall (its top 16 rows
+// above the head, more than 0.15 of its height; its bottom 8 rows past the
+// feet):
+// the head is too far from the top for the fit to trust it, unless the
+// people's size says the head-to-feet extent is one whole person at its
+// feet. Not for a blob's own box, nor for an extent under kSizedExtent (0.8)
+// of a person.
+START_TEST(fit_takes_a_far_head_where_the_size_vouches)
+{
+    PersonSize size;
+    size.reset(200);
+    learn_line(size, 0.6, 0);
+    ck_assert_double_eq_tol(size.height_at(160), 96, 5);
+    static uint8_t m[100 * 200];
+    draw_standing(m, 64, false); // head at row 64, feet at 160: 96 rows
+    const Box high{36, 48, 28, 104};
+    Box out;
+    // Without the size the head is no one's in particular: rows kept.
+    ck_assert(fit_box(m, 100, 200, 1, high, kFitFollow, nullptr, true, &out));
+    ck_assert_double_eq_tol(out.top, high.top, 0.5);
+    ck_assert_double_eq_tol(out.height, high.height, 0.5);
+    // With it, the box moves the follow's share of the way to the extent.
+    ck_assert(fit_box(m, 100, 200, 1, high, kFitFollow, &size, true, &out));
+    const double centre = out.top + out.height / 2;
+    ck_assert_double_eq_tol(centre, 100 + kFitFollow * (112 - 100), 1);
+    ck_assert_double_eq_tol(out.height, 104 + kFitFollow * (96 - 104), 1);
+    // A blob's own box keeps its rows.
+    ck_assert(fit_box(m, 100, 200, 1, high, kFitFollow, &size, false, &out));
+    ck_assert_double_eq_tol(out.top, high.top, 0.5);
+    ck_assert_double_eq_tol(out.height, high.height, 0.5);
+    // Where people standing at those feet are 125 rows tall, the 96-row
+    // extent is under 0.8 of one (a fragment, a child): rows kept.
+    PersonSize taller;
+    taller.reset(200);
+    learn_line(taller, 0.3, 77);
+    ck_assert_double_eq_tol(taller.height_at(160), 125, 6);
+    ck_assert(fit_box(m, 100, 200, 1, high, kFitFollow, &taller, true, &out));
+    ck_assert_double_eq_tol(out.top, high.top, 0.5);
+    ck_assert_double_eq_tol(out.height, high.height, 0.5);
+}
+END_TEST
+
 // A walker in mid-stride: the same head and torso as draw_standing() (head
 // at row 60), the front leg straight down to row 151 and the rear leg
 // slanting back to a foot on row 159, its columns 34-40, some 12 columns
@@ -881,6 +923,7 @@ int main(void)
     tcase_add_test(tc, filter_learns_a_constant_velocity);
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
+    tcase_add_test(tc, fit_takes_a_far_head_where_the_size_vouches);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
     tcase_add_test(tc, fit_in_front_reads_below_the_other_box);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);

@@ -32,7 +32,13 @@ constexpr double kMinFill = 0.3, kMaxFill = 0.85;
 constexpr double kMinHeight = 0.8, kMaxHeight = 1.25;
 // A head found farther than kHeadSlack box heights from the box's top is
 // not this person's top (a group's, a blob in pieces): no move up or down.
+// Unless, for a detector's box, the people's size vouches for it: the
+// extent from that head to the feet is at least kSizedExtent of a person's
+// height at those feet (and no more than kOnePerson), so it is one whole
+// person and the detector's box sits above or below them (docs/tuning.md,
+// "A head far from a detector's box's top").
 constexpr double kHeadSlack = 0.15;
+CT_TUNABLE(kSizedExtent, "CTRACK_SIZED_EXTENT", 0.8);
 // Where the people's size speaks, a head-to-feet extent taller than
 // kOnePerson times a person's height at its feet's row holds another
 // person's head above or feet below (one behind, one in front, their
@@ -245,8 +251,10 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     const double feet_y = (bottom + 1) * v.s;
     const bool one_person = !(size && size->speaks_at(feet_y)) ||
                             tall <= kOnePerson * size->height_at(feet_y);
-    const bool extent = !cut_foot && head_near && one_person && tall >= kMinHeight * b.height &&
-                        tall <= kMaxHeight * b.height;
+    const double at_feet = detector && size ? person_at_feet(*size, feet_y) : 0;
+    const bool whole = at_feet > 0 && tall >= kSizedExtent * at_feet;
+    const bool extent = !cut_foot && (head_near || whole) && one_person &&
+                        tall >= kMinHeight * b.height && tall <= kMaxHeight * b.height;
     const double mid = b.top + b.height / 2;
     double cy = mid;
     if (extent) {
@@ -255,15 +263,12 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
         // the pixels' own boxes are the blob's extent already.
         if (detector)
             out->height = b.height + follow * (tall - b.height);
-    } else if (detector && !one_person && !cut_foot &&
+    } else if (at_feet > 0 && !one_person && !cut_foot &&
                std::fabs(feet_y - (b.top + b.height)) <= kFeetSlack * b.height) {
         // Not one person's extent, but its feet are where the detector
         // put this person's.
-        const double person = person_at_feet(*size, feet_y);
-        if (person > 0) {
-            cy += follow * (feet_y - person / 2 - mid);
-            out->height = b.height + follow * (person - b.height);
-        }
+        cy += follow * (feet_y - at_feet / 2 - mid);
+        out->height = b.height + follow * (at_feet - b.height);
     }
     out->top = cy - out->height / 2;
     return true;

@@ -31,7 +31,8 @@ constexpr double kFitFollow = 0.7;
 // `detector`'s box (not the pixels' own, which is its blob's extent) much
 // wider than the silhouette is narrowed to it, and its height moves
 // `follow` of the way to the silhouette's head-to-feet extent where that
-// is the whole person's; other boxes keep their size.
+// is the whole person's (its head near the box's top, or, with the size,
+// the extent one person tall at its feet); other boxes keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out);
 
