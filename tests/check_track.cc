@@ -739,6 +739,39 @@ START_TEST(fit_takes_a_far_head_where_the_size_vouches)
 }
 END_TEST
 
+// A person whose legs run off the image's bottom (a 100 x 200 mask, the
+// head's top at row 100, the legs down to the last row): a detector's box
+// that ends above the edge (row 192) moves the follow's share of the way
+// to the extent from the head to the edge. Not a box that runs past the
+// edge (nothing says where the feet are), nor a blob's own box.
+START_TEST(fit_takes_the_extent_to_the_image_edge)
+{
+    static uint8_t m[100 * 200];
+    std::fill(m, m + 100 * 200, 0);
+    for (int y = 100; y < 200; y++)
+        for (int x = 0; x < 100; x++) {
+            const bool head = y < 112 && x >= 45 && x < 55;
+            const bool torso = y >= 112 && y < 170 && x >= 40 && x < 60;
+            const bool legs = y >= 170 && ((x >= 41 && x < 49) || (x >= 51 && x < 59));
+            if (head || torso || legs)
+                m[y * 100 + x] = 255;
+        }
+    const Box above{36, 100, 28, 92};
+    Box out;
+    ck_assert(fit_box(m, 100, 200, 1, above, kFitFollow, nullptr, true, &out));
+    const double centre = out.top + out.height / 2;
+    ck_assert_double_eq_tol(centre, 146 + kFitFollow * (150 - 146), 0.5);
+    ck_assert_double_eq_tol(out.height, 92 + kFitFollow * (100 - 92), 0.5);
+    const Box past{36, 100, 28, 110};
+    ck_assert(fit_box(m, 100, 200, 1, past, kFitFollow, nullptr, true, &out));
+    ck_assert_double_eq_tol(out.top, past.top, 0.5);
+    ck_assert_double_eq_tol(out.height, past.height, 0.5);
+    ck_assert(fit_box(m, 100, 200, 1, above, kFitFollow, nullptr, false, &out));
+    ck_assert_double_eq_tol(out.top, above.top, 0.5);
+    ck_assert_double_eq_tol(out.height, above.height, 0.5);
+}
+END_TEST
+
 // A walker in mid-stride: the same head and torso as draw_standing() (head
 // at row 60), the front leg straight down to row 151 and the rear leg
 // slanting back to a foot on row 159, its columns 34-40, some 12 columns
@@ -924,6 +957,7 @@ int main(void)
     tcase_add_test(tc, fit_bias_learns_what_the_fit_does);
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, fit_takes_a_far_head_where_the_size_vouches);
+    tcase_add_test(tc, fit_takes_the_extent_to_the_image_edge);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
     tcase_add_test(tc, fit_in_front_reads_below_the_other_box);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);

@@ -238,7 +238,8 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     // A person the image's edge cuts has no silhouette's centre across it:
     // the box stays where it is in that direction.
     const bool cut_side = b.left < 0 || b.left + b.width > w * v.s;
-    const bool cut_foot = bottom >= h - 1 || b.top + b.height > h * v.s;
+    const bool at_edge = bottom >= h - 1, past_edge = b.top + b.height > h * v.s;
+    const bool cut_foot = at_edge || past_edge;
     const double axis_x = (axis + 0.5) * v.s, head_y = top * v.s;
     const double cx = cut_side ? b.left + b.width / 2 : axis_x;
     const double tall = (bottom + 1 - top) * v.s;
@@ -253,7 +254,11 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
                             tall <= kOnePerson * size->height_at(feet_y);
     const double at_feet = detector && size ? person_at_feet(*size, feet_y) : 0;
     const bool whole = at_feet > 0 && tall >= kSizedExtent * at_feet;
-    const bool extent = !cut_foot && (head_near || whole) && one_person &&
+    // A silhouette on the image's last row reaches at least that far, cut
+    // there or standing on it: a detector's box that ends above the edge
+    // takes the extent to it (docs/tuning.md, "Feet on the image's edge").
+    const bool to_edge = detector && at_edge && !past_edge;
+    const bool extent = (!cut_foot || to_edge) && (head_near || whole) && one_person &&
                         tall >= kMinHeight * b.height && tall <= kMaxHeight * b.height;
     const double mid = b.top + b.height / 2;
     double cy = mid;

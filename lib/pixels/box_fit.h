@@ -32,7 +32,9 @@ constexpr double kFitFollow = 0.7;
 // wider than the silhouette is narrowed to it, and its height moves
 // `follow` of the way to the silhouette's head-to-feet extent where that
 // is the whole person's (its head near the box's top, or, with the size,
-// the extent one person tall at its feet); other boxes keep their size.
+// the extent one person tall at its feet; feet on the image's last row
+// are the edge's, taken only for a box that ends above it); other boxes
+// keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out);
 
