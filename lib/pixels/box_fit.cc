@@ -188,8 +188,10 @@ double silhouette_width(const View &v, int x0, int x1, int y0, int y1, int axis)
 } // namespace
 
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
-             const PersonSize *size, bool detector, Box *out)
+             const PersonSize *size, bool detector, Box *out, Stature *stature)
 {
+    if (stature)
+        stature->seen = 0;
     if (!(b.width > 0 && b.height > 0) || scale < 1)
         return false;
     const View v{mask, w, h, (double)scale};
@@ -262,6 +264,8 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
                         tall >= kMinHeight * b.height && tall <= kMaxHeight * b.height;
     const double mid = b.top + b.height / 2;
     double cy = mid;
+    if (extent && stature && head_near && !cut_foot && at_feet > 0)
+        stature->seen = tall / at_feet;
     if (extent) {
         cy += follow * ((top + bottom + 1) * v.s / 2 - mid);
         // A detector's box often runs past the feet or above the head;
@@ -271,9 +275,11 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     } else if (at_feet > 0 && !one_person && !cut_foot &&
                std::fabs(feet_y - (b.top + b.height)) <= kFeetSlack * b.height) {
         // Not one person's extent, but its feet are where the detector
-        // put this person's.
-        cy += follow * (feet_y - at_feet / 2 - mid);
-        out->height = b.height + follow * (at_feet - b.height);
+        // put this person's: toward their own height where it is known
+        // (docs/tuning.md, "A person's own stature").
+        const double own = stature && stature->known > 0 ? stature->known * at_feet : at_feet;
+        cy += follow * (feet_y - own / 2 - mid);
+        out->height = b.height + follow * (own - b.height);
     }
     out->top = cy - out->height / 2;
     return true;

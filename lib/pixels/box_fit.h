@@ -15,6 +15,17 @@ namespace ctrack {
 // (docs/tuning.md, "Boxes fitted to the silhouette").
 constexpr double kFitFollow = 0.7;
 
+// One person's stature (the ratio of their silhouette's head-to-feet
+// extent to the people's size at its feet): `known`, or 0 where it is not
+// yet, stands for the people's size where a detector's box moves toward the
+// height of a person at its feet with no head of its own to read; `seen`
+// is set to the ratio this fit measured where it read the whole extent (0
+// where it did not).
+struct Stature {
+    double known = 0;
+    double seen = 0;
+};
+
 // The box b (frame pixels) fitted to the silhouette in the w x h mask
 // (non-zero: foreground; a working pixel is `scale` frame pixels across),
 // into *out, its centre moved `follow` of the way to the silhouette's (1:
@@ -27,7 +38,8 @@ constexpr double kFitFollow = 0.7;
 // not one person's (a head behind or feet in front joined to it): the
 // box is not moved up or down by it, but for a detector's box whose bottom
 // is at those feet, which moves `follow` of the way to the height of a
-// person standing there (someone's head behind joined the extent). A
+// person standing there (someone's head behind joined the extent): this
+// person's own where `stature` knows it. A
 // `detector`'s box (not the pixels' own, which is its blob's extent) much
 // wider than the silhouette is narrowed to it, and its height moves
 // `follow` of the way to the silhouette's head-to-feet extent where that
@@ -36,7 +48,7 @@ constexpr double kFitFollow = 0.7;
 // are the edge's, taken only for a box that ends above it); other boxes
 // keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
-             const PersonSize *size, bool detector, Box *out);
+             const PersonSize *size, bool detector, Box *out, Stature *stature = nullptr);
 
 // A detector's box whose top another box covers, its person in front
 // (their feet below the other box's bottom, `cover_bottom`, by kFrontRows

@@ -333,10 +333,12 @@ bool PixelCandidates::silhouettes_clear(int64_t t_us) const
     return fg <= kMaxForegroundShare * w * h;
 }
 
-bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool detector, Box *out) const
+bool PixelCandidates::fit(const Box &b, const PersonSize &size, bool detector, Box *out,
+                          Stature *stature) const
 {
     return have_mask_ && fit_box(blobs_.cleaned(), background_.width(), background_.height(),
-                                 background_.scale(), b, kFitFollow, &size, detector, out);
+                                 background_.scale(), b, kFitFollow, &size, detector, out,
+                                 stature);
 }
 
 bool PixelCandidates::fit_in_front(const Box &b, double cover_bottom, const PersonSize &size,

@@ -12,6 +12,7 @@
 
 #include "pixels/background.h"
 #include "pixels/blobs.h"
+#include "pixels/box_fit.h"
 #include "template/classifier.h"
 #include "track/person_size.h"
 #include "base/planes.h"
@@ -52,7 +53,8 @@ public:
     // is not mostly foreground (a moving camera, a light switched).
     bool silhouettes_clear(int64_t t_us) const;
     // Box b fitted to this step's silhouette (fit_box()), or false.
-    bool fit(const Box &b, const PersonSize &size, bool detector, Box *out) const;
+    bool fit(const Box &b, const PersonSize &size, bool detector, Box *out,
+             Stature *stature = nullptr) const;
     // Box b, whose top a box with its bottom at `cover_bottom` covers,
     // fitted to this step's silhouette below that (fit_in_front()), or false.
     bool fit_in_front(const Box &b, double cover_bottom, const PersonSize &size, Box *out) const;

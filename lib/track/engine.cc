@@ -75,6 +75,11 @@ CT_TUNABLE(kBufferMax, "CTRACK_BUFFER_MAX", 0.5);
 // would shrink to it and lose its person (docs/tuning.md, "Someone
 // behind").
 CT_TUNABLE(kBehindRatio, "CTRACK_BEHIND_RATIO", 0.8);
+// A person's own stature (box_fit.h) stands in for the people's size once
+// this many fits have read it, and is a running mean over the last
+// kStatureSamples (docs/tuning.md, "A person's own stature").
+CT_TUNABLE(kStatureMin, "CTRACK_STATURE_MIN", 5);
+CT_TUNABLE(kStatureSamples, "CTRACK_STATURE_SAMPLES", 20);
 // Whether a detector's boxes are trusted by their scores as the tracker
 // learns them (score_noise.h); 0 only in a tuning build's sweeps.
 CT_TUNABLE(kScoreNoise, "CTRACK_SCORE_NOISE", 1.0);
@@ -805,6 +810,7 @@ bool Engine::reported_box(const Track &t, ImageSize image, Box *out) const
 void Engine::report(int64_t t_us, ImageSize image)
 {
     state_.reported.clear();
+    reported_from_.clear();
     for (const Track &t : state_.tracks) {
         if (t.state == CT_TRACK_TENTATIVE)
             continue;
@@ -838,6 +844,7 @@ void Engine::report(int64_t t_us, ImageSize image)
         o.detection_index = t.det_index;
         o.class_id = t.class_id;
         state_.reported.push_back(o);
+        reported_from_.push_back((size_t)(&t - state_.tracks.data()));
     }
     if (fit_boxes_)
         fit_reported(image);
@@ -861,9 +868,9 @@ void Engine::fit_reported(ImageSize image)
     // A detector's box changed without its silhouette (to the learnt
     // mean, or cut to one person) is fitted again from there, and stays
     // as changed where the fit cannot read it.
-    auto refit = [&](Box *x) {
+    auto refit = [&](Box *x, Stature *stature) {
         Box again;
-        if (pixels_.fit(*x, state_.learnt.size, true, &again))
+        if (pixels_.fit(*x, state_.learnt.size, true, &again, stature))
             *x = again;
     };
     // Each box is fitted against the others as they were before the fit:
@@ -871,6 +878,11 @@ void Engine::fit_reported(ImageSize image)
     fitted_.resize(rows.size());
     for (size_t i = 0; i < rows.size(); i++) {
         const Box b = box_of(rows[i]);
+        // The person's own stature, once a few fits have read it.
+        Track &track = state_.tracks[reported_from_[i]];
+        Stature stature;
+        if (track.stature_n >= kStatureMin)
+            stature.known = track.stature;
         const ct_track *cover = nullptr;
         for (size_t j = 0; j < rows.size() && !cover; j++) {
             if (j == i)
@@ -895,10 +907,15 @@ void Engine::fit_reported(ImageSize image)
                 fitted_[i] = b;
             continue;
         }
-        if (pixels_.fit(b, state_.learnt.size, detector, &fitted_[i])) {
+        if (pixels_.fit(b, state_.learnt.size, detector, &fitted_[i], &stature)) {
             // Learnt as fitted, before any clipping at the image's edge.
             if (detector)
                 state_.learnt.fit_bias.learn(b, fitted_[i]);
+            if (stature.seen > 0) {
+                track.stature_n++;
+                track.stature += (stature.seen - track.stature) /
+                                 std::min(track.stature_n, (int)kStatureSamples);
+            }
         } else if (detector) {
             // No silhouette to read: a detector's box takes what the fit
             // does to its boxes on average. A box too loose for the fit
@@ -907,7 +924,7 @@ void Engine::fit_reported(ImageSize image)
             // box; not learnt from, since it starts from what was learnt.
             fitted_[i] = state_.learnt.fit_bias.apply(b);
             if (state_.learnt.fit_bias.known())
-                refit(&fitted_[i]);
+                refit(&fitted_[i], &stature);
         } else {
             fitted_[i] = b;
         }
@@ -915,7 +932,7 @@ void Engine::fit_reported(ImageSize image)
         // person's: the fit before the cut read the joined extent and
         // moved it neither up nor down.
         if (detector && cut_to_one_person(state_.learnt.size, &fitted_[i]))
-            refit(&fitted_[i]);
+            refit(&fitted_[i], &stature);
         if (!clip_box(image, &fitted_[i]))
             fitted_[i] = b;
     }

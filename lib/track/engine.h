@@ -265,6 +265,7 @@ private:
     Vec<int> row_to_col_, pool_tracks_, pool_dets_, low_dets_;
     Vec<char> det_used_;
     Vec<Box> fitted_; // fit_reported()'s
+    Vec<size_t> reported_from_; // report()'s: the track each reported row is
     // Whether this step's detections are trusted by their scores
     // (score_noise.h): a detector's boxes without frames.
     bool by_score_ = false;

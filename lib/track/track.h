@@ -96,6 +96,12 @@ struct Track : BoxMotion {
     // candidate.
     int64_t live_us = 0;
     bool object = false;
+    // With a detector's boxes and frames, the person's own stature: their
+    // silhouette's head-to-feet extent over the people's size at its feet,
+    // a running mean over the fits that saw the whole extent
+    // (Engine::fit_reported()), and how many it is over.
+    double stature = 0;
+    int stature_n = 0;
     // The last step a still track's box stirred (Engine::follow_or_lose()).
     int64_t stir_us = -1;
     int det_index = -1;
