@@ -39,14 +39,13 @@ struct Stature {
 // box is not moved up or down by it, but for a detector's box whose bottom
 // is at those feet, which moves `follow` of the way to the height of a
 // person standing there (someone's head behind joined the extent): this
-// person's own where `stature` knows it. A
-// `detector`'s box (not the pixels' own, which is its blob's extent) much
-// wider than the silhouette is narrowed to it, and its height moves
-// `follow` of the way to the silhouette's head-to-feet extent where that
-// is the whole person's (its head near the box's top, or, with the size,
-// the extent one person tall at its feet; feet on the image's last row
-// are the edge's, taken only for a box that ends above it); other boxes
-// keep their size.
+// person's own where `stature` knows it. A `detector`'s box (not the
+// pixels' own, which is its blob's extent) much wider than the silhouette
+// is narrowed to it, and its height moves `follow` of the way to the
+// silhouette's head-to-feet extent where that is the whole person's (its
+// head near the box's top, or, with the size, the extent one person tall
+// at its feet; feet on the image's last row are the edge's, taken only for
+// a box that ends above it); other boxes keep their size.
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out, Stature *stature = nullptr);
 
