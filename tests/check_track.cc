@@ -739,6 +739,49 @@ START_TEST(fit_takes_a_far_head_where_the_size_vouches)
 }
 END_TEST
 
+// A person behind a sign (the 100 x 200 mask shows their head, its top at
+// row 64, and their shoulders down to row 98; the people's size puts a
+// person of the line's height, 96 rows, under that head): a detector's box
+// 12 rows too high holds too little foreground for fit_box(). fit_faint()
+// moves it the follow's share of the way to the head and to the height of
+// a person of their stature under it. Not without a head near the box's
+// top, nor where the line is as steep as the rows (a camera at street
+// level: no one under a head), nor a box fit_box() reads.
+START_TEST(fit_faint_places_a_box_from_its_persons_head)
+{
+    PersonSize size;
+    size.reset(200);
+    learn_line(size, 0.6, 0);
+    ck_assert_double_eq_tol(size.height_under_head(64), 96, 4);
+    ck_assert_double_eq_tol(size.height_under_head(64, 0.9), 75, 4);
+    static uint8_t m[100 * 200];
+    draw_standing(m, 64, false);
+    std::fill(m + 98 * 100, m + 200 * 100, 0);
+    const Box high{36, 52, 28, 96};
+    Box out;
+    ck_assert(!fit_box(m, 100, 200, 1, high, kFitFollow, &size, true, &out));
+    ck_assert(fit_faint(m, 100, 200, 1, high, kFitFollow, size, 1, &out));
+    ck_assert_double_eq_tol(out.top, 52 + kFitFollow * (64 - 52), 1.5);
+    ck_assert_double_eq_tol(out.height, 96, 2);
+    ck_assert_double_eq_tol(out.left + out.width / 2, 50, 1);
+    // A shorter person's own stature: toward their height.
+    ck_assert(fit_faint(m, 100, 200, 1, high, kFitFollow, size, 0.9, &out));
+    ck_assert_double_eq_tol(out.height, 96 + kFitFollow * (75 - 96), 3);
+    // No head within a quarter of the box below its top.
+    const Box far{36, 20, 28, 96};
+    ck_assert(!fit_faint(m, 100, 200, 1, far, kFitFollow, size, 1, &out));
+    // A line as steep as the rows puts no one under a head.
+    PersonSize steep;
+    steep.reset(200);
+    learn_line(steep, 1.3, -100);
+    ck_assert(steep.known() && steep.slope() > 1);
+    ck_assert(!fit_faint(m, 100, 200, 1, high, kFitFollow, steep, 1, &out));
+    // The whole silhouette is fit_box()'s.
+    draw_standing(m, 64, false);
+    ck_assert(!fit_faint(m, 100, 200, 1, high, kFitFollow, size, 1, &out));
+}
+END_TEST
+
 // A person whose legs run off the image's bottom (a 100 x 200 mask, the
 // head's top at row 100, the legs down to the last row): a detector's box
 // that ends above the edge (row 192) moves the follow's share of the way
@@ -958,6 +1001,7 @@ int main(void)
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, fit_takes_a_far_head_where_the_size_vouches);
     tcase_add_test(tc, fit_takes_the_extent_to_the_image_edge);
+    tcase_add_test(tc, fit_faint_places_a_box_from_its_persons_head);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
     tcase_add_test(tc, fit_in_front_reads_below_the_other_box);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);

@@ -54,6 +54,9 @@ constexpr double kCut = 0.75, kFeetReach = 1.2;
 // the head of someone behind: the box moves toward the height of a person
 // standing at those feet (docs/tuning.md, "The feet of a joined extent").
 CT_TUNABLE(kFeetSlack, "CTRACK_FEET_SLACK", 0.1);
+// A box too faint to fit (fit_faint()): its person's head is sought from
+// the reach above its top down to kFaintHeadSlack of its height below it.
+CT_TUNABLE(kFaintHeadSlack, "CTRACK_FAINT_HEAD_SLACK", 0.25);
 // The silhouette's width: the columns around the axis in which at least
 // kColumnFill of the box's rows are foreground (its arms and legs in
 // stride included). A box wider than kWidthMargin times that is narrowed
@@ -117,6 +120,33 @@ struct View {
     }
 };
 
+// A box and the reach around it, in working pixels, clipped to the mask:
+// the reach's columns [x0, x1) and rows [y0, y1), the box's [bx0, bx1)
+// and [by0, by1).
+struct Reach {
+    int x0, x1, y0, y1, bx0, bx1, by0, by1;
+    Reach(const View &v, const Box &b)
+        : x0(v.col(std::floor((b.left - kReach * b.width) / v.s))),
+          x1(v.col(std::ceil((b.left + (1 + kReach) * b.width) / v.s))),
+          y0(v.row(std::floor((b.top - kReach * b.height) / v.s))),
+          y1(v.row(std::ceil((b.top + (1 + kReach) * b.height) / v.s))),
+          bx0(v.col(std::floor(b.left / v.s))), bx1(v.col(std::ceil((b.left + b.width) / v.s))),
+          by0(v.row(std::floor(b.top / v.s))), by1(v.row(std::ceil((b.top + b.height) / v.s)))
+    {
+    }
+    // Whether there is enough of it to read, and not too much to count.
+    bool readable() const
+    {
+        return x1 - x0 >= 4 && y1 - y0 >= 6 && bx1 > bx0 && by1 > by0 && x1 - x0 <= kMaxColumns;
+    }
+    // The share of foreground in the box.
+    double fill(const View &v) const
+    {
+        const long inside = count_nonzero(v.mask, (size_t)v.w, bx0, by0, bx1, by1);
+        return (double)inside / ((double)(bx1 - bx0) * (by1 - by0));
+    }
+};
+
 // The foreground in each column of [x0, x1) over rows [y0, y1), into
 // counts[0 .. x1 - x0 - 1] (x1 - x0 <= kMaxColumns); returns their sum.
 long column_counts(const View &v, int x0, int x1, int y0, int y1, int *counts)
@@ -142,6 +172,28 @@ int feet_row(const View &v, int y0, int y1, int c0, int c1)
         if (v.share(y, c0, c1) >= kFeetFill)
             last = y;
     return last;
+}
+
+// The body's axis: the median column of the foreground in the torso's rows
+// of box rows [by0, by1), over columns [x0, x1); -1 where they hold too
+// little to say.
+int torso_axis(const View &v, int x0, int x1, int by0, int by1)
+{
+    int counts[kMaxColumns];
+    const int ay0 = by0 + (int)(kAxisTop * (by1 - by0));
+    const int ay1 = std::max(ay0 + 1, by0 + (int)(kAxisBottom * (by1 - by0)));
+    const long total = column_counts(v, x0, x1, ay0, ay1, counts);
+    return total < 5 ? -1 : x0 + share_column(counts, x1 - x0, total, 0.5);
+}
+
+// The head's top: the first row in [y0, y1) whose share of the head's
+// band reaches kHeadFill, or -1.
+int head_row(const View &v, const Band &head, int y0, int y1)
+{
+    for (int y = y0; y < y1; y++)
+        if (v.share(y, head.c0, head.c1) >= kHeadFill)
+            return y;
+    return -1;
 }
 
 // With the people's size: a cut box grown to the feet, or to the height a
@@ -195,37 +247,22 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     if (!(b.width > 0 && b.height > 0) || scale < 1)
         return false;
     const View v{mask, w, h, (double)scale};
-    // The box and the reach around it, in working pixels, clipped.
-    const int x0 = v.col(std::floor((b.left - kReach * b.width) / v.s));
-    const int x1 = v.col(std::ceil((b.left + (1 + kReach) * b.width) / v.s));
-    const int y0 = v.row(std::floor((b.top - kReach * b.height) / v.s));
-    const int y1 = v.row(std::ceil((b.top + (1 + kReach) * b.height) / v.s));
-    const int bx0 = v.col(std::floor(b.left / v.s));
-    const int bx1 = v.col(std::ceil((b.left + b.width) / v.s));
-    const int by0 = v.row(std::floor(b.top / v.s));
-    const int by1 = v.row(std::ceil((b.top + b.height) / v.s));
-    if (x1 - x0 < 4 || y1 - y0 < 6 || bx1 <= bx0 || by1 <= by0 || x1 - x0 > kMaxColumns)
+    const Reach r(v, b);
+    if (!r.readable())
         return false;
+    const int x0 = r.x0, x1 = r.x1, y0 = r.y0, y1 = r.y1, by0 = r.by0, by1 = r.by1;
     // One person, clearly: neither a fragment nor a filled block.
-    const long inside = count_nonzero(mask, (size_t)w, bx0, by0, bx1, by1);
-    const double fill = (double)inside / ((double)(bx1 - bx0) * (by1 - by0));
+    const double fill = r.fill(v);
     if (fill < kMinFill || fill > kMaxFill)
         return false;
     // The body's axis and width, from the torso's rows.
-    int counts[kMaxColumns];
-    const int ay0 = by0 + (int)(kAxisTop * (by1 - by0));
-    const int ay1 = std::max(ay0 + 1, by0 + (int)(kAxisBottom * (by1 - by0)));
-    const long total = column_counts(v, x0, x1, ay0, ay1, counts);
-    if (total < 5)
+    const int axis = torso_axis(v, x0, x1, by0, by1);
+    if (axis < 0)
         return false;
-    const int axis = x0 + share_column(counts, x1 - x0, total, 0.5);
     // The head's top and the feet on the axis.
     const Band head = v.around(axis, kHeadBand * b.height, x0, x1);
     const Band feet = v.around(axis, kFeetBand * b.height, x0, x1);
-    int top = -1;
-    for (int y = y0; y < y1 && top < 0; y++)
-        if (v.share(y, head.c0, head.c1) >= kHeadFill)
-            top = y;
+    const int top = head_row(v, head, y0, y1);
     const int bottom = top < 0 ? -1 : feet_row(v, top, y1, feet.c0, feet.c1);
     if (top < 0 || bottom < top)
         return false;
@@ -282,6 +319,41 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
         out->height = b.height + follow * (own - b.height);
     }
     out->top = cy - out->height / 2;
+    return true;
+}
+
+bool fit_faint(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
+               const PersonSize &size, double stature, Box *out)
+{
+    // With a line as steep as the rows (a camera at head height), a
+    // nearer person's head is no lower in the image: a head's row says
+    // little of the height under it.
+    if (!(b.width > 0 && b.height > 0) || scale < 1 || !size.known() || !(stature > 0) ||
+        stature * size.slope() >= 1)
+        return false;
+    const View v{mask, w, h, (double)scale};
+    const Reach r(v, b);
+    if (!r.readable() || r.fill(v) >= kMinFill)
+        return false;
+    const int axis = torso_axis(v, r.x0, r.x1, r.by0, r.by1);
+    if (axis < 0)
+        return false;
+    const Band band = v.around(axis, kHeadBand * b.height, r.x0, r.x1);
+    const int top = head_row(v, band, r.y0, v.row((b.top + kFaintHeadSlack * b.height) / v.s));
+    if (top < 0)
+        return false;
+    // The person the line and their stature put under that head, where the
+    // line holds at their feet.
+    const double head = top * v.s;
+    const double tall = size.height_under_head(head, stature);
+    if (!(tall > 0) || !size.speaks_at(head + tall) || !size.line_holds_at(head + tall))
+        return false;
+    *out = b;
+    // A person the image's edge cuts has no silhouette's centre across it.
+    if (b.left >= 0 && b.left + b.width <= w * v.s)
+        out->left += follow * ((axis + 0.5) * v.s - (b.left + b.width / 2));
+    out->top = b.top + follow * (head - b.top);
+    out->height = b.height + follow * (tall - b.height);
     return true;
 }
 

@@ -49,6 +49,19 @@ struct Stature {
 bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
              const PersonSize *size, bool detector, Box *out, Stature *stature = nullptr);
 
+// A detector's box b too faint for fit_box() (under 0.3 of it foreground: a
+// person behind a sign or a post, their legs hidden, or dressed like the
+// ground) whose person's `stature` is known (Stature::known): the first
+// row of foreground on the body's axis from the reach above its top to a
+// quarter of its height below it is their head, and the box moves
+// `follow` of the way to the person of that stature the people's size
+// puts under it (its top to the head, its height to theirs) and across to
+// the axis (docs/tuning.md, "A box too faint to fit"). False, *out
+// untouched, where no head is found or the size gives no one under it (a
+// line as steep as the rows: a camera at head height).
+bool fit_faint(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
+               const PersonSize &size, double stature, Box *out);
+
 // A detector's box whose top another box covers, its person in front
 // (their feet below the other box's bottom, `cover_bottom`, by kFrontRows
 // of its height or more): the rows below the other box are its person's

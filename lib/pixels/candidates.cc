@@ -349,6 +349,14 @@ bool PixelCandidates::fit_in_front(const Box &b, double cover_bottom, const Pers
                                               cover_bottom, kFitFollow, &size, out);
 }
 
+bool PixelCandidates::fit_faint(const Box &b, const PersonSize &size, double stature,
+                                Box *out) const
+{
+    return have_mask_ && ctrack::fit_faint(blobs_.cleaned(), background_.width(),
+                                           background_.height(), background_.scale(), b,
+                                           kFitFollow, size, stature, out);
+}
+
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const
 {
     *w = background_.width();

@@ -58,6 +58,9 @@ public:
     // Box b, whose top a box with its bottom at `cover_bottom` covers,
     // fitted to this step's silhouette below that (fit_in_front()), or false.
     bool fit_in_front(const Box &b, double cover_bottom, const PersonSize &size, Box *out) const;
+    // A detector's box b too faint to fit, fitted from its person's head and
+    // stature (fit_faint()), or false.
+    bool fit_faint(const Box &b, const PersonSize &size, double stature, Box *out) const;
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part

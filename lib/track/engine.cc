@@ -866,11 +866,15 @@ void Engine::fit_reported(ImageSize image)
     const bool detector = cfg_.source == CT_SOURCE_DETECTIONS;
     auto box_of = [](const ct_track &o) { return Box{o.left, o.top, o.width, o.height}; };
     // A detector's box changed without its silhouette (to the learnt
-    // mean, or cut to one person) is fitted again from there, and stays
-    // as changed where the fit cannot read it.
+    // mean, or cut to one person) is fitted again from there. Still too
+    // faint to fit, it is placed from its person's head where their own
+    // stature is known (docs/tuning.md, "A box too faint to fit"), and
+    // stays as changed elsewhere.
     auto refit = [&](Box *x, Stature *stature) {
         Box again;
-        if (pixels_.fit(*x, state_.learnt.size, true, &again, stature))
+        if (pixels_.fit(*x, state_.learnt.size, true, &again, stature) ||
+            (stature->known > 0 &&
+             pixels_.fit_faint(*x, state_.learnt.size, stature->known, &again)))
             *x = again;
     };
     // Each box is fitted against the others as they were before the fit:

@@ -142,11 +142,11 @@ bool PersonSize::speaks_at(double y) const
     return y >= top_feet_ - kFeetMargin * at_feet && line_at(y) >= kMinShrink * at_feet;
 }
 
-double PersonSize::height_under_head(double y) const
+double PersonSize::height_under_head(double y, double stature) const
 {
-    if (!known_ || std::fabs(1 - slope_) < 1e-6)
+    if (!known_ || !(stature > 0) || std::fabs(1 - stature * slope_) < 1e-6)
         return 0;
-    const double tall = (slope_ * y + intercept_) / (1 - slope_);
+    const double tall = stature * (slope_ * y + intercept_) / (1 - stature * slope_);
     return tall > 0 ? tall : 0;
 }
 

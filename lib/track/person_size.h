@@ -44,8 +44,9 @@ public:
     // head at row y: h with h = slope * (y + h) + intercept, their feet at
     // y + h; 0 where there is none (unknown, a line as steep as the rows
     // themselves, or a head above the horizon it guesses). Not held at the
-    // bounds: callers judge the person it gives.
-    double height_under_head(double y) const;
+    // bounds: callers judge the person it gives. With `stature`, of a
+    // person that many times the line's height at their feet.
+    double height_under_head(double y, double stature = 1) const;
     // Whether height_at(y) is the fitted line's own, not held at its
     // bounds (max_height() above: where the line runs past the image's
     // height, height_at() says that height).
