@@ -13,8 +13,9 @@ IoU >= 0.5; cteval.score) and splits the error of the matched pairs:
   image than the other's) or behind, with the mean offset of the box's top
   and bottom from the ground truth's in heights of the ground truth;
 - for the covered ones, whether ctrack reported another box over this one
-  (more than a sixth of it covered, the rule under which the library leaves
-  a box unfitted) or none: one box where there are two people;
+  (more than a sixth of it covered, the rule under which the library fits
+  a detector's box only from the rows its person has alone, in front or
+  behind) or none: one box where there are two people;
 - what the total would be if the covered pairs' centres were right (an
   oracle: the share of the error the occlusions hold).
 With --picture, a sheet of the uncovered pairs whose error is over 10%:
@@ -117,7 +118,7 @@ def main():
     row("... ctrack reported no other box over it", covered & (our_share == 0))
     row("... ctrack's boxes overlap, under a sixth", covered & (our_share > 0) &
         (our_share <= COVER))
-    row("... ctrack's boxes overlap, more (fitted only in front)", covered & (our_share > COVER))
+    row("... ctrack's boxes overlap, more (fitted in front and behind)", covered & (our_share > COVER))
     uncovered = gt_share == 0
     print("\nThe uncovered pairs: median %.2f%%, %.1f%% of them over 10%% holding %.2f "
           "points of the mean; with the covered pairs' centres right in height: %.2f%%."

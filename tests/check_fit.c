@@ -5,10 +5,11 @@
  * far above the head ends at it (and at the feet, cut to one person and
  * fitted again), a short person under someone's head behind keeps their
  * own height, a person in front of another is fitted from the rows
- * below the other's box, a faint person's box is narrowed as the detector's
- * others were, one too loose to read is read again so narrowed, and one
- * still too faint (a person behind a sign) is placed from the head; on a
- * camera that pans, the boxes are as without the fit. */
+ * below the other's box and one behind from their head above it, a faint
+ * person's box is narrowed as the detector's others were, one too loose
+ * to read is read again so narrowed, and one still too faint (a person
+ * behind a sign) is placed from the head; on a camera that pans, the
+ * boxes are as without the fit. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -33,6 +34,8 @@ typedef struct {
     bool undetected;               /* the detector gives no box for it */
     int hidden_from;               /* from this frame on (if not 0), hidden below its shoulders */
     double box_up;                 /* ... and its box moved up this share of its height */
+    int below_from;                /* from this frame on (if not 0), its box runs on below */
+    double box_below;              /* ... its feet by this share of its height */
 } person;
 
 /* A street: slabs of irregular widths and greys, a kerb, grain. */
@@ -101,7 +104,8 @@ static size_t render(const person *ps, int n, int k, int pan, uint8_t *y, uint8_
             continue;
         const double above = k >= p->above_from ? p->box_above : 0;
         const double bw = width_of(p) * p->box_wide;
-        const double bh = p->height * (p->box_cut + above);
+        const double below = p->below_from && k >= p->below_from ? p->box_below : 0;
+        const double bh = p->height * (p->box_cut + above + below);
         const double up = p->hidden_from && k >= p->hidden_from ? p->box_up : 0;
         d[nd++] = test_det((float)(cx - bw / 2 + p->box_shift * width_of(p)),
                            (float)(p->feet - p->height * (1 + above + up)), (float)bw, (float)bh,
@@ -477,6 +481,44 @@ START_TEST(a_faint_box_is_placed_from_the_head)
 }
 END_TEST
 
+START_TEST(a_person_behind_another_keeps_their_height)
+{
+    /* A person walks alone, then someone walks in front of them, lower in
+     * the image, hiding their legs; the detector's box for the one behind
+     * runs on into the legs of the one in front, 0.3 of a height below
+     * their feet. The box another covers is not fitted whole; its head,
+     * above the other box, and the stature read while they walked alone
+     * place it: its top at the head, its bottom 0.7 of the way (the fit's
+     * follow) from the detector's to the feet. Without the fit it runs on
+     * below. */
+    scene s;
+    person *p = crowd_and(&s, newcomer(10, 1, 1));
+    p->below_from = 60;
+    p->box_below = 0.3;
+    s.ps[s.n++] = (person){.x = centre_at(p, 45), .feet = 235, .height = 0.7 * 235 - 40,
+                           .speed = p->speed, .enter = 45, .box_cut = 1, .box_wide = 1};
+    const size_t a = run(s.ps, s.n, 90, 0, 1, s.on), b = run(s.ps, s.n, 90, 0, 0, s.off);
+    const double x = centre_at(p, 89);
+    /* The two boxes share a centre: the one behind is the one that starts higher. */
+    const ct_track *fit = NULL, *raw = NULL;
+    for (size_t i = 0; i < a; i++)
+        if (fabs(s.on[i].left + s.on[i].width / 2 - x) < 10 && (!fit || s.on[i].top < fit->top))
+            fit = &s.on[i];
+    for (size_t i = 0; i < b; i++)
+        if (fabs(s.off[i].left + s.off[i].width / 2 - x) < 10 && (!raw || s.off[i].top < raw->top))
+            raw = &s.off[i];
+    ck_assert_ptr_nonnull(fit);
+    ck_assert_ptr_nonnull(raw);
+    const double raw_off = raw->top + raw->height - p->feet;
+    const double fit_off = fit->top + fit->height - p->feet;
+    ck_assert_msg(raw_off > 0.2 * p->height, "unfitted bottom %g below the feet", raw_off);
+    ck_assert_msg(fabs(fit_off) < 0.5 * raw_off, "fitted bottom %g off, unfitted %g", fit_off,
+                  raw_off);
+    ck_assert_msg(fabs(fit->top - (p->feet - p->height)) < 0.08 * p->height, "top %g, head %g",
+                  fit->top, p->feet - p->height);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("fit");
@@ -489,6 +531,7 @@ int main(void)
     tcase_add_test(tc, a_box_cut_to_one_person_is_fitted_again);
     tcase_add_test(tc, a_short_person_keeps_their_own_height);
     tcase_add_test(tc, a_faint_box_is_placed_from_the_head);
+    tcase_add_test(tc, a_person_behind_another_keeps_their_height);
     tcase_add_test(tc, a_person_in_front_is_fitted_from_below_the_other);
     tcase_add_test(tc, a_faint_person_takes_the_detectors_learnt_width);
     tcase_add_test(tc, a_loose_box_is_read_again_at_the_learnt_width);

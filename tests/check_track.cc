@@ -782,6 +782,45 @@ START_TEST(fit_faint_places_a_box_from_its_persons_head)
 }
 END_TEST
 
+// A person behind another (the 100 x 200 mask: their head's top at row 64,
+// 96 rows above their feet on the people's line; the one in front a block
+// from row 90 down, whose box starts there): a detector's box for the one
+// behind from 12 rows above their head down into the other's legs, row 192,
+// moves the follow's share of the way to their head and to the height of
+// a person of their stature under it, from the rows above the other box.
+// Not a box whose head is under the other's top, nor one that ends below
+// the other's bottom (in front), nor where the line is as steep as the rows.
+START_TEST(fit_behind_places_a_box_from_the_head_above_the_other)
+{
+    PersonSize size;
+    size.reset(200);
+    learn_line(size, 0.6, 0);
+    static uint8_t m[100 * 200];
+    draw_standing(m, 64, false);
+    for (int y = 90; y < 200; y++)
+        for (int x = 30; x < 70; x++)
+            m[y * 100 + x] = 255;
+    const Box b{36, 52, 28, 140};
+    Box out;
+    ck_assert(fit_behind(m, 100, 200, 1, b, 90, 200, kFitFollow, size, 1, &out));
+    ck_assert_double_eq_tol(out.top, 52 + kFitFollow * (64 - 52), 1.5);
+    ck_assert_double_eq_tol(out.height, 140 + kFitFollow * (96 - 140), 2);
+    ck_assert_double_eq_tol(out.left, b.left, 1e-9);
+    ck_assert_double_eq_tol(out.width, b.width, 1e-9);
+    // A shorter person's own stature: toward their height.
+    ck_assert(fit_behind(m, 100, 200, 1, b, 90, 200, kFitFollow, size, 0.9, &out));
+    ck_assert_double_eq_tol(out.height, 140 + kFitFollow * (75 - 140), 3);
+    // The other box starts above this one: no head of its own above it.
+    ck_assert(!fit_behind(m, 100, 200, 1, b, 50, 200, kFitFollow, size, 1, &out));
+    // This one ends below the other: its person is in front.
+    ck_assert(!fit_behind(m, 100, 200, 1, b, 90, 190, kFitFollow, size, 1, &out));
+    PersonSize steep;
+    steep.reset(200);
+    learn_line(steep, 1.3, -100);
+    ck_assert(!fit_behind(m, 100, 200, 1, b, 90, 200, kFitFollow, steep, 1, &out));
+}
+END_TEST
+
 // A person whose legs run off the image's bottom (a 100 x 200 mask, the
 // head's top at row 100, the legs down to the last row): a detector's box
 // that ends above the edge (row 192) moves the follow's share of the way
@@ -1002,6 +1041,7 @@ int main(void)
     tcase_add_test(tc, fit_takes_a_far_head_where_the_size_vouches);
     tcase_add_test(tc, fit_takes_the_extent_to_the_image_edge);
     tcase_add_test(tc, fit_faint_places_a_box_from_its_persons_head);
+    tcase_add_test(tc, fit_behind_places_a_box_from_the_head_above_the_other);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);
     tcase_add_test(tc, fit_in_front_reads_below_the_other_box);
     tcase_add_test(tc, a_cut_box_grows_only_to_a_height_the_line_holds);

@@ -322,39 +322,79 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     return true;
 }
 
+namespace {
+
+// Box b placed from its person's head: the first row in [y0, y1) whose
+// share of the head's band around column `axis` reaches kHeadFill, and the
+// person of `stature` the people's size puts under it, where its line
+// holds at their feet; *out moves `follow` of the way to them (its top to
+// the head, its height to theirs) and, `across`, to the axis. False, *out
+// untouched, where there is no head or no such person.
+bool place_from_head(const View &v, const Box &b, int axis, int x0, int x1, int y0, int y1,
+                     double follow, const PersonSize &size, double stature, bool across,
+                     Box *out)
+{
+    const Band band = v.around(axis, kHeadBand * b.height, x0, x1);
+    const int top = head_row(v, band, y0, y1);
+    if (top < 0)
+        return false;
+    const double head = top * v.s;
+    const double tall = size.height_under_head(head, stature);
+    if (!(tall > 0) || !size.speaks_at(head + tall) || !size.line_holds_at(head + tall))
+        return false;
+    *out = b;
+    if (across)
+        out->left += follow * ((axis + 0.5) * v.s - (b.left + b.width / 2));
+    out->top = b.top + follow * (head - b.top);
+    out->height = b.height + follow * (tall - b.height);
+    return true;
+}
+
+// With a line as steep as the rows (a camera at head height), a nearer
+// person's head is no lower in the image: a head's row says little of the
+// height under it.
+bool head_says_height(const PersonSize &size, double stature)
+{
+    return size.known() && stature > 0 && stature * size.slope() < 1;
+}
+
+} // namespace
+
 bool fit_faint(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
                const PersonSize &size, double stature, Box *out)
 {
-    // With a line as steep as the rows (a camera at head height), a
-    // nearer person's head is no lower in the image: a head's row says
-    // little of the height under it.
-    if (!(b.width > 0 && b.height > 0) || scale < 1 || !size.known() || !(stature > 0) ||
-        stature * size.slope() >= 1)
+    if (!(b.width > 0 && b.height > 0) || scale < 1 || !head_says_height(size, stature))
         return false;
     const View v{mask, w, h, (double)scale};
     const Reach r(v, b);
     if (!r.readable() || r.fill(v) >= kMinFill)
         return false;
     const int axis = torso_axis(v, r.x0, r.x1, r.by0, r.by1);
-    if (axis < 0)
-        return false;
-    const Band band = v.around(axis, kHeadBand * b.height, r.x0, r.x1);
-    const int top = head_row(v, band, r.y0, v.row((b.top + kFaintHeadSlack * b.height) / v.s));
-    if (top < 0)
-        return false;
-    // The person the line and their stature put under that head, where the
-    // line holds at their feet.
-    const double head = top * v.s;
-    const double tall = size.height_under_head(head, stature);
-    if (!(tall > 0) || !size.speaks_at(head + tall) || !size.line_holds_at(head + tall))
-        return false;
-    *out = b;
     // A person the image's edge cuts has no silhouette's centre across it.
-    if (b.left >= 0 && b.left + b.width <= w * v.s)
-        out->left += follow * ((axis + 0.5) * v.s - (b.left + b.width / 2));
-    out->top = b.top + follow * (head - b.top);
-    out->height = b.height + follow * (tall - b.height);
-    return true;
+    const bool across = b.left >= 0 && b.left + b.width <= w * v.s;
+    return axis >= 0 &&
+           place_from_head(v, b, axis, r.x0, r.x1, r.y0,
+                           v.row((b.top + kFaintHeadSlack * b.height) / v.s), follow, size,
+                           stature, across, out);
+}
+
+bool fit_behind(const uint8_t *mask, int w, int h, int scale, const Box &b, double cover_top,
+                double cover_bottom, double follow, const PersonSize &size, double stature,
+                Box *out)
+{
+    if (!(b.width > 0 && b.height > 0) || scale < 1 || !head_says_height(size, stature) ||
+        !(b.top < cover_top) || !(b.top + b.height < cover_bottom))
+        return false;
+    const View v{mask, w, h, (double)scale};
+    const Reach r(v, b);
+    if (!r.readable())
+        return false;
+    // The head is sought above the other box, on the axis of the box's
+    // torso's rows, as the fit reads it.
+    const int axis = torso_axis(v, r.x0, r.x1, r.by0, r.by1);
+    return axis >= 0 && place_from_head(v, b, axis, r.x0, r.x1, r.y0,
+                                        v.row(std::ceil(cover_top / v.s)), follow, size, stature,
+                                        false, out);
 }
 
 bool fit_in_front(const uint8_t *mask, int w, int h, int scale, const Box &b,

@@ -62,6 +62,21 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
 bool fit_faint(const uint8_t *mask, int w, int h, int scale, const Box &b, double follow,
                const PersonSize &size, double stature, Box *out);
 
+// A detector's box whose bottom another box covers, its person behind
+// (their box starting above the other's top, `cover_top`, and ending above
+// its bottom, `cover_bottom`), whose `stature` is known: the rows above the
+// other box are its person's alone, and the first row of foreground on the
+// body's axis there is their head. The box moves `follow` of the way to
+// the person of that stature the people's size puts under it, its top to
+// the head and its height to theirs; across it stays, the axis of two
+// people's silhouette being no nearer its person's centre than the
+// detector's box (docs/tuning.md, "The person behind"). False, *out
+// untouched, where the person is not behind, no head is found or the size
+// gives no one under it (a line as steep as the rows).
+bool fit_behind(const uint8_t *mask, int w, int h, int scale, const Box &b, double cover_top,
+                double cover_bottom, double follow, const PersonSize &size, double stature,
+                Box *out);
+
 // A detector's box whose top another box covers, its person in front
 // (their feet below the other box's bottom, `cover_bottom`, by kFrontRows
 // of its height or more): the rows below the other box are its person's

@@ -357,6 +357,15 @@ bool PixelCandidates::fit_faint(const Box &b, const PersonSize &size, double sta
                                            kFitFollow, size, stature, out);
 }
 
+bool PixelCandidates::fit_behind(const Box &b, double cover_top, double cover_bottom,
+                                 const PersonSize &size, double stature, Box *out) const
+{
+    return have_mask_ && ctrack::fit_behind(blobs_.cleaned(), background_.width(),
+                                            background_.height(), background_.scale(), b,
+                                            cover_top, cover_bottom, kFitFollow, size, stature,
+                                            out);
+}
+
 const uint8_t *PixelCandidates::foreground(int *w, int *h) const
 {
     *w = background_.width();

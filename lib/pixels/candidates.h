@@ -61,6 +61,8 @@ public:
     // A detector's box b too faint to fit, fitted from its person's head and
     // stature (fit_faint()), or false.
     bool fit_faint(const Box &b, const PersonSize &size, double stature, Box *out) const;
+    bool fit_behind(const Box &b, double cover_top, double cover_bottom, const PersonSize &size,
+                    double stature, Box *out) const;
 
     const Vec<ct_detection> &dets() const { return dets_; }
     // Whether this step's candidate i (of find()) is a whole blob: a part

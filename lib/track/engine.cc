@@ -901,13 +901,19 @@ void Engine::fit_reported(ImageSize image)
         }
         if (cover) {
             // Only the legs of a detector's person in front are theirs
-            // alone to read. A blob's box is its extent already, and
-            // moved by them it tracks groups worse (docs/tuning.md, "The
-            // person in front").
-            if (!detector ||
-                !pixels_.fit_in_front(b, (double)cover->top + cover->height,
-                                      state_.learnt.size, &fitted_[i]) ||
-                !clip_box(image, &fitted_[i]))
+            // alone to read, and the head of one behind. A blob's box is
+            // its extent already, and moved by them it tracks groups worse
+            // (docs/tuning.md, "The person in front").
+            const double cover_bottom = (double)cover->top + cover->height;
+            Box x;
+            if (detector &&
+                (pixels_.fit_in_front(b, cover_bottom, state_.learnt.size, &x) ||
+                 (stature.known > 0 && pixels_.fit_behind(b, cover->top, cover_bottom,
+                                                           state_.learnt.size, stature.known,
+                                                           &x))) &&
+                clip_box(image, &x))
+                fitted_[i] = x;
+            else
                 fitted_[i] = b;
             continue;
         }
