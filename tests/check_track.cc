@@ -621,6 +621,15 @@ static void learn_line(PersonSize &size, double slope, double offset)
     size.learn();
 }
 
+// The people's size of a 200-row image, learnt from that line.
+static PersonSize line_of(double slope, double offset)
+{
+    PersonSize size;
+    size.reset(200);
+    learn_line(size, slope, offset);
+    return size;
+}
+
 // A person's silhouette in a 100 x 200 mask (scale 1): head, torso and legs,
 // its head's top at `top` and its feet at row 160, centred on column 50;
 // with `behind`, another person's head and shoulders just above, joined to
@@ -739,6 +748,33 @@ START_TEST(fit_takes_a_far_head_where_the_size_vouches)
 }
 END_TEST
 
+// A short person (82 rows, 0.85 of the people's 96 at their feet, row 160)
+// with someone's head joined above theirs: the joined extent, 92 rows, is
+// under 1.1 of the people's height but over 1.1 of this person's own. With
+// their stature known it is not one person's: a detector's box from that
+// head to the feet moves toward their own height, from the feet up, and
+// does not keep the joined extent. The extent is still read as a stature
+// against the people's size, so that a stature read low once is corrected.
+START_TEST(one_person_is_judged_by_their_own_stature)
+{
+    const PersonSize size = line_of(0.6, 0);
+    static uint8_t m[100 * 200];
+    draw_standing(m, 78, true);
+    const Box b{36, 68, 28, 92};
+    Box out;
+    Stature unknown;
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, &size, true, &out, &unknown));
+    ck_assert_double_eq_tol(out.height, 92, 2);
+    ck_assert_double_eq_tol(unknown.seen, 92.0 / 96, 0.03);
+    Stature own;
+    own.known = 0.85;
+    ck_assert(fit_box(m, 100, 200, 1, b, kFitFollow, &size, true, &out, &own));
+    ck_assert_double_eq_tol(out.height, 92 + kFitFollow * (0.85 * 96 - 92), 2);
+    ck_assert_double_eq_tol(out.top + out.height, 160, 1.5);
+    ck_assert_double_eq_tol(own.seen, 92.0 / 96, 0.03);
+}
+END_TEST
+
 // A person behind a sign (the 100 x 200 mask shows their head, its top at
 // row 64, and their shoulders down to row 98; the people's size puts a
 // person of the line's height, 96 rows, under that head): a detector's box
@@ -749,9 +785,7 @@ END_TEST
 // level: no one under a head), nor a box fit_box() reads.
 START_TEST(fit_faint_places_a_box_from_its_persons_head)
 {
-    PersonSize size;
-    size.reset(200);
-    learn_line(size, 0.6, 0);
+    const PersonSize size = line_of(0.6, 0);
     ck_assert_double_eq_tol(size.height_under_head(64), 96, 4);
     ck_assert_double_eq_tol(size.height_under_head(64, 0.9), 75, 4);
     static uint8_t m[100 * 200];
@@ -771,9 +805,7 @@ START_TEST(fit_faint_places_a_box_from_its_persons_head)
     const Box far{36, 20, 28, 96};
     ck_assert(!fit_faint(m, 100, 200, 1, far, kFitFollow, size, 1, &out));
     // A line as steep as the rows puts no one under a head.
-    PersonSize steep;
-    steep.reset(200);
-    learn_line(steep, 1.3, -100);
+    const PersonSize steep = line_of(1.3, -100);
     ck_assert(steep.known() && steep.slope() > 1);
     ck_assert(!fit_faint(m, 100, 200, 1, high, kFitFollow, steep, 1, &out));
     // The whole silhouette is fit_box()'s.
@@ -792,9 +824,7 @@ END_TEST
 // the other's bottom (in front), nor where the line is as steep as the rows.
 START_TEST(fit_behind_places_a_box_from_the_head_above_the_other)
 {
-    PersonSize size;
-    size.reset(200);
-    learn_line(size, 0.6, 0);
+    const PersonSize size = line_of(0.6, 0);
     static uint8_t m[100 * 200];
     draw_standing(m, 64, false);
     for (int y = 90; y < 200; y++)
@@ -814,9 +844,7 @@ START_TEST(fit_behind_places_a_box_from_the_head_above_the_other)
     ck_assert(!fit_behind(m, 100, 200, 1, b, 50, 200, kFitFollow, size, 1, &out));
     // This one ends below the other: its person is in front.
     ck_assert(!fit_behind(m, 100, 200, 1, b, 90, 190, kFitFollow, size, 1, &out));
-    PersonSize steep;
-    steep.reset(200);
-    learn_line(steep, 1.3, -100);
+    const PersonSize steep = line_of(1.3, -100);
     ck_assert(!fit_behind(m, 100, 200, 1, b, 90, 200, kFitFollow, steep, 1, &out));
 }
 END_TEST
@@ -1040,6 +1068,7 @@ int main(void)
     tcase_add_test(tc, fit_moves_a_box_only_to_one_persons_extent);
     tcase_add_test(tc, fit_takes_a_far_head_where_the_size_vouches);
     tcase_add_test(tc, fit_takes_the_extent_to_the_image_edge);
+    tcase_add_test(tc, one_person_is_judged_by_their_own_stature);
     tcase_add_test(tc, fit_faint_places_a_box_from_its_persons_head);
     tcase_add_test(tc, fit_behind_places_a_box_from_the_head_above_the_other);
     tcase_add_test(tc, fit_finds_the_feet_across_a_stride);

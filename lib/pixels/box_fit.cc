@@ -287,21 +287,28 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
     out->left += follow * (cx - (sized.left + sized.width / 2));
     if (sized.height != b.height)
         return true; // grown to the feet: its top is the head's already
-    // The silhouette's head-to-feet extent, where it is the whole person's.
+    // The silhouette's head-to-feet extent, where it is the whole person's:
+    // not more than kOnePerson times as tall as this person, their own
+    // stature once it is known (docs/tuning.md, "One person by their own
+    // stature"). The stature itself is read against the people's size, so
+    // that one read low does not refuse the person's whole extent after.
     const double feet_y = (bottom + 1) * v.s;
-    const bool one_person = !(size && size->speaks_at(feet_y)) ||
-                            tall <= kOnePerson * size->height_at(feet_y);
+    const double line = size && size->speaks_at(feet_y) ? size->height_at(feet_y) : 0;
+    const double own = stature && stature->known > 0 ? stature->known : 1;
+    const bool one_person = !(line > 0) || tall <= kOnePerson * own * line;
+    const bool one_of_the_people = !(line > 0) || tall <= kOnePerson * line;
     const double at_feet = detector && size ? person_at_feet(*size, feet_y) : 0;
     const bool whole = at_feet > 0 && tall >= kSizedExtent * at_feet;
     // A silhouette on the image's last row reaches at least that far, cut
     // there or standing on it: a detector's box that ends above the edge
     // takes the extent to it (docs/tuning.md, "Feet on the image's edge").
     const bool to_edge = detector && at_edge && !past_edge;
-    const bool extent = (!cut_foot || to_edge) && (head_near || whole) && one_person &&
-                        tall >= kMinHeight * b.height && tall <= kMaxHeight * b.height;
+    const bool readable = (!cut_foot || to_edge) && (head_near || whole) &&
+                          tall >= kMinHeight * b.height && tall <= kMaxHeight * b.height;
+    const bool extent = readable && one_person;
     const double mid = b.top + b.height / 2;
     double cy = mid;
-    if (extent && stature && head_near && !cut_foot && at_feet > 0)
+    if (readable && one_of_the_people && stature && head_near && !cut_foot && at_feet > 0)
         stature->seen = tall / at_feet;
     if (extent) {
         cy += follow * ((top + bottom + 1) * v.s / 2 - mid);

@@ -34,8 +34,9 @@ struct Stature {
 // on the body's axis). With the people's size known (`size`, or null) a
 // box cut short of a person's height (below the head it has at its top)
 // grows to the feet below, or to that height; and a head-to-feet extent
-// more than a tenth taller than a person whose feet are at its bottom is
-// not one person's (a head behind or feet in front joined to it): the
+// more than a tenth taller than a person whose feet are at its bottom
+// (than this person, where `stature` knows their share of the people's
+// size) is not one person's (a head behind or feet in front joined to it): the
 // box is not moved up or down by it, but for a detector's box whose bottom
 // is at those feet, which moves `follow` of the way to the height of a
 // person standing there (someone's head behind joined the extent): this

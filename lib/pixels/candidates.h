@@ -61,6 +61,9 @@ public:
     // A detector's box b too faint to fit, fitted from its person's head and
     // stature (fit_faint()), or false.
     bool fit_faint(const Box &b, const PersonSize &size, double stature, Box *out) const;
+    // A detector's box b whose person is behind a box from row cover_top
+    // to cover_bottom, placed from their head above it and their stature
+    // (fit_behind()), or false.
     bool fit_behind(const Box &b, double cover_top, double cover_bottom, const PersonSize &size,
                     double stature, Box *out) const;
 

@@ -901,9 +901,10 @@ void Engine::fit_reported(ImageSize image)
         }
         if (cover) {
             // Only the legs of a detector's person in front are theirs
-            // alone to read, and the head of one behind. A blob's box is
-            // its extent already, and moved by them it tracks groups worse
-            // (docs/tuning.md, "The person in front").
+            // alone to read, and the head of one behind (docs/tuning.md,
+            // "The person behind"). A blob's box is its extent already,
+            // and moved by them it tracks groups worse (docs/tuning.md,
+            // "The person in front").
             const double cover_bottom = (double)cover->top + cover->height;
             Box x;
             if (detector &&
