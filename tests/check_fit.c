@@ -154,6 +154,19 @@ static const ct_track *near_x(const ct_track *tr, size_t n, double x)
     return best;
 }
 
+/* Of the tracks whose box centre is within 10 pixels of x, the one whose
+ * box starts highest in the image (of two people one behind the other,
+ * the one behind). */
+static const ct_track *highest_near_x(const ct_track *tr, size_t n, double x)
+{
+    const ct_track *best = NULL;
+    for (size_t i = 0; i < n; i++)
+        if (fabs(tr[i].left + tr[i].width / 2 - x) < 10 && (!best || tr[i].top < best->top))
+            best = &tr[i];
+    ck_assert_ptr_nonnull(best);
+    return best;
+}
+
 /* The crowd below and the person under test, the last of ps, run for 90
  * frames on a still camera with the fit and without: the last frame's
  * track nearest that person's centre in each. */
@@ -500,15 +513,7 @@ START_TEST(a_person_behind_another_keeps_their_height)
     const size_t a = run(s.ps, s.n, 90, 0, 1, s.on), b = run(s.ps, s.n, 90, 0, 0, s.off);
     const double x = centre_at(p, 89);
     /* The two boxes share a centre: the one behind is the one that starts higher. */
-    const ct_track *fit = NULL, *raw = NULL;
-    for (size_t i = 0; i < a; i++)
-        if (fabs(s.on[i].left + s.on[i].width / 2 - x) < 10 && (!fit || s.on[i].top < fit->top))
-            fit = &s.on[i];
-    for (size_t i = 0; i < b; i++)
-        if (fabs(s.off[i].left + s.off[i].width / 2 - x) < 10 && (!raw || s.off[i].top < raw->top))
-            raw = &s.off[i];
-    ck_assert_ptr_nonnull(fit);
-    ck_assert_ptr_nonnull(raw);
+    const ct_track *fit = highest_near_x(s.on, a, x), *raw = highest_near_x(s.off, b, x);
     const double raw_off = raw->top + raw->height - p->feet;
     const double fit_off = fit->top + fit->height - p->feet;
     ck_assert_msg(raw_off > 0.2 * p->height, "unfitted bottom %g below the feet", raw_off);

@@ -321,9 +321,9 @@ bool fit_box(const uint8_t *mask, int w, int h, int scale, const Box &b, double 
         // Not one person's extent, but its feet are where the detector
         // put this person's: toward their own height where it is known
         // (docs/tuning.md, "A person's own stature").
-        const double own = stature && stature->known > 0 ? stature->known * at_feet : at_feet;
-        cy += follow * (feet_y - own / 2 - mid);
-        out->height = b.height + follow * (own - b.height);
+        const double theirs = own * at_feet;
+        cy += follow * (feet_y - theirs / 2 - mid);
+        out->height = b.height + follow * (theirs - b.height);
     }
     out->top = cy - out->height / 2;
     return true;

@@ -873,8 +873,7 @@ void Engine::fit_reported(ImageSize image)
     auto refit = [&](Box *x, Stature *stature) {
         Box again;
         if (pixels_.fit(*x, state_.learnt.size, true, &again, stature) ||
-            (stature->known > 0 &&
-             pixels_.fit_faint(*x, state_.learnt.size, stature->known, &again)))
+            pixels_.fit_faint(*x, state_.learnt.size, stature->known, &again))
             *x = again;
     };
     // Each box is fitted against the others as they were before the fit:
@@ -909,9 +908,8 @@ void Engine::fit_reported(ImageSize image)
             Box x;
             if (detector &&
                 (pixels_.fit_in_front(b, cover_bottom, state_.learnt.size, &x) ||
-                 (stature.known > 0 && pixels_.fit_behind(b, cover->top, cover_bottom,
-                                                           state_.learnt.size, stature.known,
-                                                           &x))) &&
+                 pixels_.fit_behind(b, cover->top, cover_bottom, state_.learnt.size,
+                                    stature.known, &x)) &&
                 clip_box(image, &x))
                 fitted_[i] = x;
             else
