@@ -57,6 +57,31 @@ _DET_DTYPE = np.dtype(_abi.Detection)
 _CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
 
 
+_CONFIG_TYPES = dict(_abi.Config._fields_)
+
+
+def _config_value(name, value):
+    """value as ct_config's field name holds it. ctypes would wrap an integer
+    too large for the field (max_tracks=2**32 + 5 stored as 5) and refuse a
+    whole float (min_hits=2.0); neither is what the caller meant."""
+    ctype = _CONFIG_TYPES[name]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        if not isinstance(value, (bool, np.bool_)) or ctype in (ctypes.c_float, ctypes.c_double):
+            raise TypeError("Tracker: %s=%r is not a number" % (name, value))
+        return int(value)  # a switch (mean_shift=True)
+    if ctype in (ctypes.c_float, ctypes.c_double):
+        return float(value)  # NaN and infinities reach ct_config_check, which names them
+    if isinstance(value, (float, np.floating)):
+        if not (math.isfinite(value) and float(value).is_integer()):
+            raise ValueError("Tracker: %s=%r is not a whole number" % (name, value))
+    value = int(value)
+    bits = 8 * ctypes.sizeof(ctype)
+    if not -2**(bits - 1) <= value < 2**(bits - 1):
+        raise ValueError("Tracker: %s=%r is out of the range of a %d-bit integer"
+                         % (name, value, bits))
+    return value
+
+
 class CtrackError(Exception):
     """A call into libctrack failed; `status` is its ct_status code."""
 
@@ -216,7 +241,9 @@ class Tracker:
     (high_score, min_hits, lost_lifetime, ...; see docs/API.md), plus `fps`
     (default 25), the rate assumed when feed() gets no timestamp, and
     `image_size` (width, height), the image the boxes lie in for steps
-    without pixels until a frame tells it (default unknown: (0, 0)).
+    without pixels until a frame tells it (default unknown: (0, 0)). An
+    integer field takes a whole number that fits its 32 bits (2, 2.0,
+    numpy's integers, True for a switch); anything else raises.
 
     Safe to share between threads: every call holds the tracker's lock (one
     call at a time; see the module's help)."""
@@ -239,10 +266,7 @@ class Tracker:
             if name not in _CONFIG_FIELDS:
                 raise TypeError("Tracker: unknown parameter %r (known: %s)"
                                 % (name, ", ".join(_CONFIG_FIELDS + ["fps"])))
-            try:
-                setattr(cfg, name, value)
-            except TypeError:
-                raise TypeError("Tracker: %s=%r has the wrong type" % (name, value))
+            setattr(cfg, name, _config_value(name, value))
         self.config = {name: getattr(cfg, name) for name in _CONFIG_FIELDS}
         msg = ctypes.create_string_buffer(512)
         st = self._lib.ct_config_check(ctypes.byref(cfg), msg, len(msg))

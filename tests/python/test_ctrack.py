@@ -62,6 +62,25 @@ def test_bad_parameters_raise_with_the_library_message():
         ctrack.Tracker(fps=0)
 
 
+def test_integer_parameters_are_taken_whole_and_never_wrapped():
+    # ctypes alone would store max_tracks=2**32 + 5 as 5 and refuse 2.0.
+    with pytest.raises(ValueError, match="max_tracks=4294967301 is out of the range"):
+        ctrack.Tracker(max_tracks=2**32 + 5)
+    with pytest.raises(ValueError, match="min_hits=-2147483649 is out of the range"):
+        ctrack.Tracker(min_hits=-2**31 - 1)
+    with pytest.raises(ValueError, match="min_hits=2.5 is not a whole number"):
+        ctrack.Tracker(min_hits=2.5)
+    with pytest.raises(ValueError, match="min_hits=inf is not a whole number"):
+        ctrack.Tracker(min_hits=float("inf"))
+    with pytest.raises(TypeError, match="high_score=True is not a number"):
+        ctrack.Tracker(high_score=True)
+    with ctrack.Tracker(min_hits=2.0, refine_boxes=0.0, mean_shift=False,
+                        max_tracks=np.int64(7), high_score=np.float32(0.5)) as t:
+        assert (t.config["min_hits"], t.config["refine_boxes"], t.config["mean_shift"],
+                t.config["max_tracks"]) == (2, 0, 0, 7)
+        assert t.config["high_score"] == 0.5
+
+
 def test_replay_equals_ct_track(tmp_path):
     """The binding on TUD-Campus gives exactly what ct-track writes."""
     n, fps, w, h = seqinfo("TUD-Campus")
