@@ -158,9 +158,14 @@ static int set_param(ct_config *cfg, const char *arg)
         errno = 0;
         double v = strtod(eq + 1, &end);
         if (end == eq + 1 || *end || errno || !isfinite(v) ||
-            (p->type == 'i' && (v != floor(v) || fabs(v) > 2e9))) {
+            (p->type == 'i' && v != floor(v))) {
             fprintf(stderr, "ct-track: --param %s: '%s' is not a %s\n", p->name, eq + 1,
                     p->type == 'i' ? "whole number" : "number");
+            return -1;
+        }
+        if (p->type == 'i' && fabs(v) > 2e9) {
+            fprintf(stderr, "ct-track: --param %s: '%s' is past the field's 32 bits\n", p->name,
+                    eq + 1);
             return -1;
         }
         char *base = (char *)cfg + p->offset;
