@@ -60,26 +60,39 @@ _CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
 _CONFIG_TYPES = dict(_abi.Config._fields_)
 
 
+def _whole(value):
+    """value as an int where it is a whole number (an int, numpy's, or a
+    float such as OpenCV's CAP_PROP_FRAME_WIDTH gives); None for anything
+    else, bools included."""
+    if isinstance(value, (bool, np.bool_)):
+        return None
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer():
+        return int(value)
+    return None
+
+
 def _config_value(name, value):
     """value as ct_config's field name holds it. ctypes would wrap an integer
     too large for the field (max_tracks=2**32 + 5 stored as 5) and refuse a
     whole float (min_hits=2.0); neither is what the caller meant."""
     ctype = _CONFIG_TYPES[name]
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        if not isinstance(value, (bool, np.bool_)) or ctype in (ctypes.c_float, ctypes.c_double):
-            raise TypeError("Tracker: %s=%r is not a number" % (name, value))
+    switch = isinstance(value, (bool, np.bool_))
+    if switch and ctype not in (ctypes.c_float, ctypes.c_double):
         return int(value)  # a switch (mean_shift=True)
+    if switch or not isinstance(value, (int, float, np.number)):
+        raise TypeError("Tracker: %s=%r is not a number" % (name, value))
     if ctype in (ctypes.c_float, ctypes.c_double):
         return float(value)  # NaN and infinities reach ct_config_check, which names them
-    if isinstance(value, (float, np.floating)):
-        if not (math.isfinite(value) and float(value).is_integer()):
-            raise ValueError("Tracker: %s=%r is not a whole number" % (name, value))
-    value = int(value)
+    whole = _whole(value)
+    if whole is None:
+        raise ValueError("Tracker: %s=%r is not a whole number" % (name, value))
     bits = 8 * ctypes.sizeof(ctype)
-    if not -2**(bits - 1) <= value < 2**(bits - 1):
+    if not -2**(bits - 1) <= whole < 2**(bits - 1):
         raise ValueError("Tracker: %s=%r is out of the range of a %d-bit integer"
                          % (name, value, bits))
-    return value
+    return whole
 
 
 class CtrackError(Exception):
@@ -255,10 +268,14 @@ class Tracker:
         if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
             raise ValueError("fps: %r is not a positive rate" % (fps,))
         if image_size is not None:
-            if (len(image_size) != 2 or
-                    not all(isinstance(v, int) and 0 <= v < 2**31 for v in image_size)):
+            try:
+                size = [_whole(v) for v in image_size] if not isinstance(image_size, str) else []
+            except TypeError:  # not a sequence
+                size = []
+            if len(size) != 2 or not all(v is not None and 0 <= v < 2**31 for v in size):
                 raise ValueError("image_size: %r is not (width, height) in whole pixels"
                                  % (image_size,))
+            image_size = tuple(size)
         self.fps = float(fps)
         cfg = _abi.Config()
         self._lib.ct_config_default(ctypes.byref(cfg), ctypes.sizeof(cfg))

@@ -436,7 +436,10 @@ def test_image_size_for_steps_without_pixels():
             return t.stats()["live_tracks"]
     assert live_after(image_size=(200, 300)) == 0
     assert live_after() == 1
-    for bad in ((200,), (200, -1), (200.0, 300), "wide"):
+    # Whole numbers of any type: OpenCV's CAP_PROP_FRAME_WIDTH is a float.
+    assert live_after(image_size=(200.0, np.int32(300))) == 0
+    for bad in ((200,), (200, -1), (200.5, 300), (True, 300), (float("nan"), 300), "wide",
+                (2**31, 300), 200):
         with pytest.raises(ValueError, match="image_size"):
             ctrack.Tracker(image_size=bad)
 
