@@ -265,7 +265,8 @@ class Tracker:
         self._lock = threading.RLock()
         self._t = None
         self._lib = load(library)
-        if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
+        if (isinstance(fps, (bool, np.bool_)) or not isinstance(fps, (int, float, np.number))
+                or not (math.isfinite(fps) and fps > 0)):
             raise ValueError("fps: %r is not a positive rate" % (fps,))
         if image_size is not None:
             try:

@@ -60,6 +60,10 @@ def test_bad_parameters_raise_with_the_library_message():
         ctrack.Tracker(min_hits="three")
     with pytest.raises(ValueError, match="fps"):
         ctrack.Tracker(fps=0)
+    with pytest.raises(ValueError, match="fps"):
+        ctrack.Tracker(fps=True)
+    with ctrack.Tracker(fps=np.float32(12.5)) as t:
+        assert t.fps == 12.5
 
 
 def test_integer_parameters_are_taken_whole_and_never_wrapped():
