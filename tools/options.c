@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <getopt.h>
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -163,9 +164,9 @@ static int set_param(ct_config *cfg, const char *arg)
                     p->type == 'i' ? "whole number" : "number");
             return -1;
         }
-        if (p->type == 'i' && fabs(v) > 2e9) {
-            fprintf(stderr, "ct-track: --param %s: '%s' is past the field's 32 bits\n", p->name,
-                    eq + 1);
+        if ((p->type == 'i' && fabs(v) > 2e9) || (p->type == 'f' && fabs(v) > FLT_MAX)) {
+            fprintf(stderr, "ct-track: --param %s: '%s' is past the field's %s\n", p->name,
+                    eq + 1, p->type == 'i' ? "32 bits" : "float");
             return -1;
         }
         char *base = (char *)cfg + p->offset;

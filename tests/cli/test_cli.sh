@@ -320,6 +320,7 @@ expect "unknown parameter" 2 "unknown parameter 'bogus'" -- "$ct" -d "$tud/det/d
 expect "parameter without value" 2 "NAME=VALUE" -- "$ct" -d "$tud/det/det.txt" -p min_hits
 expect "parameter not a number" 2 "not a whole number" -- "$ct" -d "$tud/det/det.txt" -p min_hits=2.5
 expect "parameter past 32 bits" 2 "max_tracks: '4294967301' is past the field's 32 bits" -- "$ct" -d "$tud/det/det.txt" -p max_tracks=4294967301
+expect "parameter past a float" 2 "high_score: '1e300' is past the field's float" -- "$ct" -d "$tud/det/det.txt" -p high_score=1e300
 expect "parameter out of range" 2 "config.lost_lifetime" -- "$ct" -d "$tud/det/det.txt" -p lost_lifetime=-3
 expect "parameter NaN" 2 "high_score: 'nan' is not a number" -- "$ct" -d "$tud/det/det.txt" -p high_score=nan
 expect "parameter set" 0 "" -- "$ct" -q -d "$tud/det/det.txt" -s 640x480 -p min_hits=1 -p report_lost_time=0
