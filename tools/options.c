@@ -2,8 +2,8 @@
 #include "options.h"
 
 #include <errno.h>
-#include <getopt.h>
 #include <float.h>
+#include <getopt.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
