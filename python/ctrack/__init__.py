@@ -58,6 +58,7 @@ _CONFIG_FIELDS = [name for name, _ in _abi.Config._fields_ if name != "size"]
 
 
 _CONFIG_TYPES = dict(_abi.Config._fields_)
+_FLOAT_MAX = float(np.finfo(np.float32).max)
 
 
 def _whole(value):
@@ -84,7 +85,10 @@ def _config_value(name, value):
     if switch or not isinstance(value, (int, float, np.number)):
         raise TypeError("Tracker: %s=%r is not a number" % (name, value))
     if ctype in (ctypes.c_float, ctypes.c_double):
-        return float(value)  # NaN and infinities reach ct_config_check, which names them
+        value = float(value)  # NaN and infinities reach ct_config_check, which names them
+        if ctype is ctypes.c_float and math.isfinite(value) and abs(value) > _FLOAT_MAX:
+            raise ValueError("Tracker: %s=%r is past the range of a float" % (name, value))
+        return value
     whole = _whole(value)
     if whole is None:
         raise ValueError("Tracker: %s=%r is not a whole number" % (name, value))

@@ -78,6 +78,8 @@ def test_integer_parameters_are_taken_whole_and_never_wrapped():
         ctrack.Tracker(min_hits=float("inf"))
     with pytest.raises(TypeError, match="high_score=True is not a number"):
         ctrack.Tracker(high_score=True)
+    with pytest.raises(ValueError, match="high_score=1e\\+300 is past the range of a float"):
+        ctrack.Tracker(high_score=1e300)
     with ctrack.Tracker(min_hits=2.0, refine_boxes=0.0, mean_shift=False,
                         max_tracks=np.int64(7), high_score=np.float32(0.5)) as t:
         assert (t.config["min_hits"], t.config["refine_boxes"], t.config["mean_shift"],
