@@ -599,7 +599,8 @@ def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force
     again."""
     jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
     if prime is not None:
-        if not (isinstance(prime, (int, float)) and math.isfinite(prime) and prime >= 0):
+        if (isinstance(prime, (bool, np.bool_)) or not isinstance(prime, (int, float, np.number))
+                or not (math.isfinite(prime) and prime >= 0)):
             raise BatchError("prime: %r is not a duration in seconds" % (prime,))
         for j in jobs:
             j["prime"] = float(prime)

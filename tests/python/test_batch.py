@@ -118,7 +118,7 @@ def test_online_by_default_and_priming_as_ct_track(tmp_path):
     outs = [f for f in os.listdir(str(tmp_path / "cli")) if f.endswith(".txt")]
     assert len(outs) == 1, outs
     assert read(str(tmp_path / "cli" / outs[0])) == online
-    for bad in (-1, float("nan"), "3"):
+    for bad in (-1, float("nan"), "3", True):
         with pytest.raises(batch.BatchError, match="prime"):
             batch.run([video], str(tmp_path / "bad"), workers=1, progress=False, prime=bad)
     r = subprocess.run([sys.executable, "-m", "ctrack.batch", "-q", "--prime", "x", "-o",
