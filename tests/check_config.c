@@ -220,6 +220,22 @@ START_TEST(bad_field_is_named)
 }
 END_TEST
 
+/* An integer field's value is written whole in the message (%g wrote
+ * 2147483647 as 2.14748e+09); a float's as %g does. */
+START_TEST(message_writes_the_value_as_given)
+{
+    ct_config cfg = test_config();
+    cfg.max_tracks = INT32_MAX;
+    char msg[256];
+    ck_assert_int_eq(ct_config_check(&cfg, msg, sizeof msg), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_str_eq(msg, "config.max_tracks: 2147483647 is not in [1, 100000] tracks");
+    cfg = test_config();
+    cfg.high_score = 1.5f;
+    ck_assert_int_eq(ct_config_check(&cfg, msg, sizeof msg), CT_ERROR_INVALID_ARGUMENT);
+    ck_assert_str_eq(msg, "config.high_score: 1.5 is not in [0, 1]");
+}
+END_TEST
+
 static Suite *config_suite(void)
 {
     Suite *s = suite_create("config");
@@ -231,6 +247,7 @@ static Suite *config_suite(void)
     tcase_add_test(tc, older_caller_struct);
     tcase_add_test(tc, too_small_size_is_refused);
     tcase_add_test(tc, check_handles_null_and_short_buffers);
+    tcase_add_test(tc, message_writes_the_value_as_given);
     tcase_add_loop_test(tc, bad_field_is_named, 0, (int)(sizeof bad_cases / sizeof bad_cases[0]));
     suite_add_tcase(s, tc);
     return s;

@@ -164,7 +164,8 @@ static int set_param(ct_config *cfg, const char *arg)
                     p->type == 'i' ? "whole number" : "number");
             return -1;
         }
-        if ((p->type == 'i' && fabs(v) > 2e9) || (p->type == 'f' && fabs(v) > FLT_MAX)) {
+        if ((p->type == 'i' && (v < -2147483648.0 || v > 2147483647.0)) ||
+            (p->type == 'f' && fabs(v) > FLT_MAX)) {
             fprintf(stderr, "ct-track: --param %s: '%s' is past the field's %s\n", p->name,
                     eq + 1, p->type == 'i' ? "32 bits" : "float");
             return -1;

@@ -135,11 +135,16 @@ int check_field(const ct_config &c, const FieldRange &r, char *msg, size_t msg_l
     const double hi = r.hi_field ? value_of(c, *range_of(r.hi_field)) : r.hi;
     if (std::isfinite(v) && (r.lo_open ? v > lo : v >= lo) && (r.hi_open ? v < hi : v <= hi))
         return CT_OK;
-    char a[64], b[64];
+    char a[64], b[64], value[32];
     bound_text(c, lo, r.lo_field, a, sizeof a);
     bound_text(c, hi, r.hi_field, b, sizeof b);
-    return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "config.%s: %g is not in %c%s, %s%c%s%s",
-                r.name, v, r.lo_open ? '(' : '[', a, b, r.hi_open ? ')' : ']',
+    // An integer as it was given (%g wrote 2147483647 as 2.14748e+09).
+    if (r.type == 'i')
+        std::snprintf(value, sizeof value, "%.0f", v);
+    else
+        std::snprintf(value, sizeof value, "%g", v);
+    return fail(msg, msg_len, CT_ERROR_INVALID_ARGUMENT, "config.%s: %s is not in %c%s, %s%c%s%s",
+                r.name, value, r.lo_open ? '(' : '[', a, b, r.hi_open ? ')' : ']',
                 *r.unit ? " " : "", r.unit);
 }
 
