@@ -61,11 +61,18 @@ _CONFIG_TYPES = dict(_abi.Config._fields_)
 _FLOAT_MAX = float(np.finfo(np.float32).max)
 
 
+def _number(value):
+    """Whether value is a real number of Python's or numpy's, not a bool
+    (True is an int to Python, and fps=True is no rate)."""
+    return (isinstance(value, (int, float, np.number)) and
+            not isinstance(value, (bool, np.bool_, np.complexfloating)))
+
+
 def _whole(value):
     """value as an int where it is a whole number (an int, numpy's, or a
     float such as OpenCV's CAP_PROP_FRAME_WIDTH gives); None for anything
     else, bools included."""
-    if isinstance(value, (bool, np.bool_)):
+    if not _number(value):
         return None
     if isinstance(value, (int, np.integer)):
         return int(value)
@@ -79,10 +86,9 @@ def _config_value(name, value):
     too large for the field (max_tracks=2**32 + 5 stored as 5) and refuse a
     whole float (min_hits=2.0); neither is what the caller meant."""
     ctype = _CONFIG_TYPES[name]
-    switch = isinstance(value, (bool, np.bool_))
-    if switch and ctype not in (ctypes.c_float, ctypes.c_double):
+    if isinstance(value, (bool, np.bool_)) and ctype not in (ctypes.c_float, ctypes.c_double):
         return int(value)  # a switch (mean_shift=True)
-    if switch or not isinstance(value, (int, float, np.number)):
+    if not _number(value):
         raise TypeError("Tracker: %s=%r is not a number" % (name, value))
     if ctype in (ctypes.c_float, ctypes.c_double):
         value = float(value)  # NaN and infinities reach ct_config_check, which names them
@@ -269,8 +275,7 @@ class Tracker:
         self._lock = threading.RLock()
         self._t = None
         self._lib = load(library)
-        if (isinstance(fps, (bool, np.bool_)) or not isinstance(fps, (int, float, np.number))
-                or not (math.isfinite(fps) and fps > 0)):
+        if not (_number(fps) and math.isfinite(fps) and fps > 0):
             raise ValueError("fps: %r is not a positive rate" % (fps,))
         if image_size is not None:
             try:

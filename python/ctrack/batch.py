@@ -62,7 +62,7 @@ import time
 
 import numpy as np
 
-from . import PRIME_SECONDS
+from . import PRIME_SECONDS, _number
 
 VIDEO_EXTENSIONS = {".mp4", ".mkv", ".avi", ".mov", ".webm", ".y4m", ".mpg", ".mpeg", ".ts",
                     ".m4v", ".mts", ".flv", ".wmv", ".ogv", ".h264", ".h265", ".hevc", ".mjpeg"}
@@ -599,8 +599,7 @@ def run(inputs, outdir, workers=None, ray=None, params=None, library=None, force
     again."""
     jobs = find_jobs(inputs, pixels_only=pixels_only, size=size, fps=fps)
     if prime is not None:
-        if (isinstance(prime, (bool, np.bool_)) or not isinstance(prime, (int, float, np.number))
-                or not (math.isfinite(prime) and prime >= 0)):
+        if not (_number(prime) and math.isfinite(prime) and prime >= 0):
             raise BatchError("prime: %r is not a duration in seconds" % (prime,))
         for j in jobs:
             j["prime"] = float(prime)
