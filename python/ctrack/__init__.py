@@ -68,6 +68,15 @@ def _number(value):
             not isinstance(value, (bool, np.bool_, np.complexfloating)))
 
 
+def _real(value, what):
+    """value as a float where it is a real number (see _number); a
+    TypeError naming what otherwise: float() would take True as 1.0 and
+    "1.5" as 1.5, neither of which the caller meant as seconds or pixels."""
+    if not _number(value):
+        raise TypeError("%s: %r is not a number" % (what, value))
+    return float(value)
+
+
 def _whole(value):
     """value as an int where it is a whole number (an int, numpy's, or a
     float such as OpenCV's CAP_PROP_FRAME_WIDTH gives); None for anything
@@ -238,7 +247,7 @@ def bgr_to_i420(image):
 
 def _microseconds(ts, what):
     """Seconds as the int64 microseconds of ct_frame.timestamp_us."""
-    ts = float(ts)
+    ts = _real(ts, what)
     if not math.isfinite(ts):
         raise ValueError("%s: %r is not finite" % (what, ts))
     us = int(round(ts * 1e6))
@@ -412,7 +421,7 @@ class Tracker:
         if timestamp is None:
             ts = 0.0 if self._last_ts is None else self._last_ts + 1.0 / self.fps
         else:
-            ts = float(timestamp)
+            ts = _real(timestamp, "timestamp")
         f.timestamp_us = _microseconds(ts, "timestamp")
         ptr = dets.ctypes.data if len(dets) else None
         self._check(self._lib.ct_tracker_feed(t, ctypes.byref(f), ptr, len(dets)))
@@ -469,10 +478,12 @@ class Tracker:
     @staticmethod
     def _point(p, what):
         try:
-            x, y = (float(v) for v in p)
+            x, y = p
         except (TypeError, ValueError):
-            raise ValueError("%s: %r is not a point (x, y)" % (what, p)) from None
-        return _abi.Point(x, y)
+            x = y = None  # not a pair
+        if not (_number(x) and _number(y)):
+            raise ValueError("%s: %r is not a point (x, y)" % (what, p))
+        return _abi.Point(float(x), float(y))
 
     @_locked
     def add_line(self, a, b, name=None, hysteresis=None):
@@ -514,7 +525,7 @@ class Tracker:
         ValueError."""
         shape.name = self._name(name)
         if hysteresis is not None:
-            shape.hysteresis = float(hysteresis)
+            shape.hysteresis = _real(hysteresis, "hysteresis")
         index = ctypes.c_int32()
         st = add(self._handle(), ctypes.byref(shape), ctypes.byref(index))
         if st == _abi.ERROR_INVALID_ARGUMENT:

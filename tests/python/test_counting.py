@@ -48,8 +48,14 @@ def test_bad_lines_and_zones_raise_and_add_nothing():
                          (((0, 0), (10, 0)), {"hysteresis": -1})]:
             with pytest.raises(ValueError):
                 t.add_line(*args, **kw)
+        for a in [(0,), (True, 0), ("0", "0"), "ab", 5]:  # float() would take the second and third
+            with pytest.raises(ValueError, match="not a point"):
+                t.add_line(a, (10, 0))
         with pytest.raises(ValueError, match="not a point"):
-            t.add_line((0,), (10, 0))
+            t.add_zone([(0, 0), (10, 0), (10, False)])
+        for h in (True, "0.2"):
+            with pytest.raises(TypeError, match="hysteresis"):
+                t.add_line((0, 0), (10, 0), hysteresis=h)
         with pytest.raises(TypeError):
             t.add_line((0, 0), (10, 0), name=5)
         for pts in [[(0, 0), (10, 10), (10, 0), (0, 10)],  # crosses itself

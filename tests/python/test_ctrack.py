@@ -221,6 +221,9 @@ def test_timestamps():
             with pytest.raises(ValueError, match="outside int64"):
                 t.feed(None, None, timestamp=far)
         t.feed(None, None, timestamp=9.2e12)  # the largest that fits, nearly
+        for bad in (True, "9.21e12", 1j):  # float() would take the first two as seconds
+            with pytest.raises(TypeError, match="timestamp"):
+                t.feed(None, None, timestamp=bad)
         t.reset()
         assert len(t.feed(None, [[10, 10, 20, 40, 0.9]], timestamp=0.0)) == 1
 
@@ -277,6 +280,8 @@ def test_bad_priming_raises_and_changes_nothing():
             t.prime([frame, frame], [0.0], format="i420")
         with pytest.raises(ValueError, match="not finite"):
             t.prime([frame, frame], [0.0, float("nan")], format="i420")
+        with pytest.raises(TypeError, match=r"timestamps\[1\]"):
+            t.prime([frame, frame], [0.0, True], format="i420")  # not 1 s
         with pytest.raises(ctrack.CtrackError, match=r"frames\[1\].*does not increase"):
             t.prime([frame, frame], [0.0, 0.0], format="i420")
         small = np.full((24 * 3 // 2, 32), 128, np.uint8)
