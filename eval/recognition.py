@@ -181,11 +181,13 @@ def balanced(pred, lab):
 
 
 def votes(dist, th):
-    """The region vote with thresholds th: pedestrian when yes > half the voters."""
+    """The region vote with thresholds th: pedestrian when yes > half the
+    voters, at least 5 vote, and the head, the neck or the shoulders among
+    them (the library's veto of a blob with no upper body)."""
     voting = dist >= 0
     yes = (voting & (dist <= th)).sum(axis=1)
     voters = voting.sum(axis=1)
-    return (voters >= 5) & (2 * yes > voters)
+    return (voters >= 5) & (2 * yes > voters) & voting[:, :3].any(axis=1)
 
 
 def choose_max_fill(dist, fill, th, lab):
@@ -581,7 +583,9 @@ frame here is held out from them; the thresholds chosen blob by blob
 blob is a pedestrian when more than half of the regions that vote say yes,
 it fills no more of its convex hull than a walking person does, its top
 is narrower than its body (0.7.0: a person has a head;
-docs/notes/pixels.md), and no shape a person is not (two walkers side by
+docs/notes/pixels.md), its head, neck or shoulders vote (0.10.0: a blob
+whose box's top quarter is mostly empty rows, a speck above a gap, shows no
+upper body; docs/tuning.md, "No upper body"), and no shape a person is not (two walkers side by
 side) fits it better than every silhouette (0.9.0) unless its top edge
 shows one head (0.10.0: it is then a pedestrian scoring at most 0.75,
 which starts no track; docs/tuning.md, "Shapes a person is not"). The column "regions

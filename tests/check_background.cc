@@ -1172,6 +1172,44 @@ START_TEST(occluded_regions_abstain)
 }
 END_TEST
 
+// A candidate whose box's top quarter is mostly empty rows (a speck above a
+// gap: the head, the neck and the shoulders all abstain) shows no upper
+// body, and is no pedestrian however well its lower regions fit; one of the
+// three voting is enough. The vote itself, which the blob merging asks for,
+// is the regions'.
+START_TEST(no_upper_body_is_no_pedestrian)
+{
+    const int w = 48, h = 128;
+    const Rect box{0, 0, w, h};
+    auto walker_without_rows = [&](int from, int to) {
+        Vec<uint8_t> m((size_t)w * h, 0);
+        for (int r = 0; r < h; r++)
+            for (int c = 0; c < w; c++)
+                if ((r < from || r >= to) && walking_person((c + 0.5) / w, (r + 0.5) / h))
+                    m[(size_t)r * w + c] = 255;
+        return m;
+    };
+    Classifier cls;
+    // The top of the head, a speck, over the body from the chest down.
+    Vec<uint8_t> m = walker_without_rows(2, 34);
+    const Vote v = cls.vote(m.data(), w, box);
+    ck_assert_float_eq(v.distance[kHead], -1.0f);
+    ck_assert_float_eq(v.distance[kNeck], -1.0f);
+    ck_assert_float_eq(v.distance[kShoulders], -1.0f);
+    ck_assert_msg(v.score > 0.5f, "the lower regions alone: %.2f (%d of %d yes)", (double)v.score,
+                  v.yes, v.voters);
+    ct_candidate c = cls.candidate(m.data(), w, h, box, 0, 0, w, h);
+    ck_assert_msg(c.score <= 0.5f, "no upper body scored %.2f", (double)c.score);
+    // The head, over a gap where the neck and shoulders were.
+    cls.new_mask();
+    m = walker_without_rows(17, 34);
+    c = cls.candidate(m.data(), w, h, box, 0, 0, w, h);
+    ck_assert_float_ge(c.region_distance[kHead], 0.0f);
+    ck_assert_float_eq(c.region_distance[kNeck], -1.0f);
+    ck_assert_msg(c.score > 0.5f, "a head over a gap scored %.2f", (double)c.score);
+}
+END_TEST
+
 namespace {
 
 // One blob of tests/data/blobs/labelled.bin (eval/recognition.py): the
@@ -1441,6 +1479,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, wide_topped_non_human_shapes_are_rejected);
     tcase_add_test(tc, hull_filling_non_human_shapes_are_rejected);
     tcase_add_test(tc, occluded_regions_abstain);
+    tcase_add_test(tc, no_upper_body_is_no_pedestrian);
     tcase_add_test(tc, real_blobs_are_classified);
     suite_add_tcase(s, tc);
     return run_suite(s);

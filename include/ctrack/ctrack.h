@@ -509,9 +509,10 @@ typedef struct ct_candidate {
      * or its top is as wide as its body, see top_width, or two people side
      * by side fit its outline better than every pedestrian silhouette and
      * its top edge shows two heads or none; with one head, 0.5 plus half
-     * the regions' margin over 0.5, at most 0.75; 0 for a blob at the
-     * image's left or right edge too narrow to have an outline); candidates
-     * feed the tracker with this score. */
+     * the regions' margin over 0.5, at most 0.75; at most 0.5 too when the
+     * head, neck and shoulders all abstain, no upper body; 0 for a blob at
+     * the image's left or right edge too narrow to have an outline);
+     * candidates feed the tracker with this score. */
     float score;
     int32_t votes_yes, voters;
     /* The paper's eq. (1) per region (head, neck, shoulders, chest, back,

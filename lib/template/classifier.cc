@@ -142,6 +142,11 @@ constexpr Repeats kRepeats = make_repeats();
 // upper median).
 constexpr int kHeadRows = kZones[kHead].row1 - kZones[kHead].row0;
 
+// Whether a candidate with no upper body to compare is no pedestrian (a
+// tuning build turns it off with CTRACK_UPPER_BODY=0; docs/tuning.md, "No
+// upper body").
+CT_TUNABLE(kUpperBodyVeto, "CTRACK_UPPER_BODY", 1);
+
 const char *const kNames[kRegions] = {"head", "neck", "shoulders", "chest", "back",
                                       "abdomen", "buttocks", "upper limbs", "lower limbs"};
 
@@ -336,6 +341,19 @@ ct_candidate Classifier::candidate(const uint8_t *mask, int w, int h, Rect r, fl
     if (regions_alone)
         *regions_alone = v.regions_alone;
     c.score = v.score;
+    // A candidate whose box's top quarter is mostly empty rows (a speck
+    // above a gap: the head, the neck and the shoulders all abstain) shows
+    // no upper body, and is no pedestrian however well its lower regions
+    // fit. Only the candidate is turned down: the blob merging and the
+    // splits between people, which vote on boxes of their own, go as the
+    // regions say, and one head on its top edge does not lift it back
+    // (PixelCandidates::score_blob()).
+    if (kUpperBodyVeto && v.distance[kHead] < 0 && v.distance[kNeck] < 0 &&
+        v.distance[kShoulders] < 0) {
+        c.score = std::min(c.score, 0.5f);
+        if (regions_alone)
+            *regions_alone = -1;
+    }
     c.votes_yes = v.yes;
     c.voters = v.voters;
     for (int g = 0; g < kRegions; g++)
