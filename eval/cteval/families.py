@@ -79,6 +79,13 @@ FAMILIES = {
 NOISE_SEEDS_FAMILY = [("alls=%d seed %d" % (a, s), "noise=alls=%d:allf=t:all_seed=%d" % (a, s),
                        None) for a in (8, 14, 20) for s in range(1, 11)]
 
+# Not make eval's either: the frames scaled from three quarters to three
+# times their size (the boxes with them), for the claims of how one clip
+# holds as its people's size in pixels changes (README.md, docs/tuning.md,
+# "The people's size: its bound"). Three times PETS09-S2L1 is 2304x1728.
+SCALE_FAMILY = [("scaled by %g" % f, "scale=trunc(iw*%g/2)*2:trunc(ih*%g/2)*2" % (f, f), scaled(f))
+                for f in (0.75, 1.25, 1.5, 2, 2.5, 3)]
+
 # Conditions that no default is chosen on: eval/vote.py reports its choice
 # over them beside the shipped one's, as a check of how it transfers.
 HELD_OUT_FAMILY = [

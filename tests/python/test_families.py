@@ -7,7 +7,8 @@ import subprocess
 import pytest
 
 from cteval.data import moved_boxes, video
-from cteval.families import FAMILIES, RATE_FAMILY, half_mirrored, run_variant, shifted
+from cteval.families import (FAMILIES, RATE_FAMILY, SCALE_FAMILY, half_mirrored, run_variant,
+                             shifted)
 from cteval.y4m import i420_planes, open_y4m
 
 from conftest import TOP
@@ -93,3 +94,21 @@ def test_a_lower_rate_scores_the_frames_it_keeps(tmp_path):
     with open(str(tmp_path / "tracks.txt")) as f:
         frames = {int(line.split(",")[0]) for line in f}
     assert max(frames) <= 36
+
+
+def test_each_scale_moves_the_boxes_as_the_frames(tmp_path):
+    # The scale family's boxes are moved by its factor, so the frames must
+    # be scaled by exactly that factor: ffmpeg's size is rounded to even
+    # numbers, which for both sequences with frames is the exact size. The
+    # first frame of each variant is checked at its size.
+    src = video("TUD-Campus")
+    h, w = first_luma(src).shape
+    for label, vf, move in SCALE_FAMILY:
+        f = float(label[len("scaled by "):])
+        assert move((100, 50, 40, 120), w, h) == pytest.approx((100 * f, 50 * f, 40 * f, 120 * f))
+        for sw, sh in ((640, 480), (768, 576)):
+            assert (sw * f) % 2 == 0 and (sh * f) % 2 == 0, (label, sw, sh)
+        out = str(tmp_path / "scaled.y4m")
+        subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", src, "-frames:v", "1", "-vf", vf,
+                        "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out], check=True)
+        assert first_luma(out).shape == (round(h * f), round(w * f)), label
