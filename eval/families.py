@@ -39,7 +39,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("build")
     ap.add_argument("family",
-                    choices=sorted(FAMILIES) + ["conditions", "frame rate", "noise seeds", "scale"])
+                    choices=sorted(FAMILIES) + ["conditions", "frame rate", "noise seeds",
+                                                "scale"])
     ap.add_argument("sweep", nargs="?",
                     help="CTRACK_NAME=V1,V2,...@SHIPPED (none: the build's defaults alone)")
     ap.add_argument("--jobs", type=int, default=2)
