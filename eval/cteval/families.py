@@ -32,8 +32,23 @@ def shifted(dx, dy):
     return lambda b, w, h: (b[0] - dx, b[1] - dy, b[2], b[3])
 
 
-# Each family: (label, ffmpeg filter, what it does to a box or None) per
-# variant.
+class Coded:
+    """Not a filter but a camera's stream: the frames encoded by x264 (H.264)
+    at a constant rate factor, a keyframe every `gop` frames, and decoded
+    again. One encoder thread, so that every machine decodes the same
+    pixels (x264's output depends on its threads)."""
+
+    def __init__(self, crf, gop):
+        self.crf, self.gop = crf, gop
+
+    def encoder(self):
+        """ffmpeg's output options for the encoding."""
+        return ["-c:v", "libx264", "-threads", "1", "-preset", "veryfast",
+                "-crf", str(self.crf), "-g", str(self.gop)]
+
+
+# Each family: (label, ffmpeg filter or Coded, what it does to a box or
+# None) per variant.
 FAMILIES = {
     # Temporal sensor noise at three strengths (make eval's condition is
     # 14), two seeds each.
@@ -69,6 +84,13 @@ FAMILIES = {
     "shift": [("cut at %d, %d" % (dx, dy), "format=yuv444p,crop=iw-4:ih-4:%d:%d" % (dx, dy),
                shifted(dx, dy))
               for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1), (2, 2), (3, 1), (1, 3), (4, 4))],
+    # What a network camera sends: H.264 from x264's default quality (a
+    # constant rate factor of 23) down to a low bitrate's (38), with a
+    # keyframe every 25 frames (a second at 25 frames/s, as such cameras
+    # send them) and every 250 (x264's default): blocks, smoothed texture
+    # and colour, and no sensor noise left.
+    "compression": [("H.264 crf %d, keyframe every %d" % (crf, gop), Coded(crf, gop), None)
+                    for crf in (23, 28, 33, 38) for gop in (25, 250)],
 }
 
 
@@ -139,21 +161,41 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
     else:
         gt = moved_boxes(seq, "gt", move, out + ".gt")
         det = moved_boxes(seq, "det", move, out + ".det") if detections else None
-    ff = subprocess.Popen(["ffmpeg", "-v", "error", "-i", video(seq), "-vf", vf,
-                           "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
-                          stdout=subprocess.PIPE)
+    pipeline = variant_stream(seq, vf)
     try:
         run_ctrack(build, seq, info, "-", out, pixels=True, params=params,
                    detections=detections, det=det,
-                   stdin=ff.stdout, env=env)
+                   stdin=pipeline[-1].stdout, env=env)
     finally:
         # A ct-track that failed leaves ffmpeg writing to a closed pipe:
         # its error is the one to report.
-        ff.stdout.close()
-        status = ff.wait()
-    if status != 0:
-        raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
+        pipeline[-1].stdout.close()
+        status = [p.wait() for p in pipeline]
+    if any(status):
+        raise RuntimeError("ffmpeg failed on %s (%s)" % (
+            seq, "crf %d, gop %d" % (vf.crf, vf.gop) if isinstance(vf, Coded) else vf))
     return score(gt, out)
+
+
+def variant_stream(seq, vf):
+    """The ffmpeg processes that give the sequence's frames through the
+    variant's filter, or encoded and decoded again (Coded), as Y4M on the
+    last one's stdout; the caller closes it and waits for each."""
+    pipeline = []
+    if isinstance(vf, Coded):
+        pipeline.append(subprocess.Popen(
+            ["ffmpeg", "-v", "error", "-i", video(seq), "-pix_fmt", "yuv420p"] + vf.encoder() +
+            ["-f", "matroska", "-"], stdout=subprocess.PIPE))
+        src = ["-i", "-"]
+    else:
+        src = ["-i", video(seq), "-vf", vf]
+    stdin = pipeline[0].stdout if pipeline else None
+    pipeline.append(subprocess.Popen(["ffmpeg", "-v", "error"] + src +
+                                     ["-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", "-"],
+                                     stdin=stdin, stdout=subprocess.PIPE))
+    if stdin:
+        stdin.close()  # the decoder holds it now
+    return pipeline
 
 
 def run_all(jobs, tmp, workers=2, progress=None):

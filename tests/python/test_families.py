@@ -7,8 +7,8 @@ import subprocess
 import pytest
 
 from cteval.data import moved_boxes, video
-from cteval.families import (FAMILIES, RATE_FAMILY, SCALE_FAMILY, half_mirrored, run_variant,
-                             shifted)
+from cteval.families import (FAMILIES, RATE_FAMILY, SCALE_FAMILY, Coded, half_mirrored,
+                             run_variant, shifted, variant_stream)
 from cteval.y4m import i420_planes, open_y4m
 
 from conftest import TOP
@@ -112,3 +112,34 @@ def test_each_scale_moves_the_boxes_as_the_frames(tmp_path):
         subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", src, "-frames:v", "1", "-vf", vf,
                         "-f", "yuv4mpegpipe", "-pix_fmt", "yuv420p", out], check=True)
         assert first_luma(out).shape == (round(h * f), round(w * f)), label
+
+
+def test_a_coded_variant_is_the_clip_through_a_camera_s_encoder(tmp_path):
+    # The compression family's lowest quality: every frame comes back, at
+    # the clip's size, and its pixels are the clip's with the encoder's
+    # losses (a few grey levels on average, not none and not another
+    # picture); the same encoding twice gives the same pixels, so that
+    # make eval's scores do not move from one run to the next.
+    labels = [label for label, _, _ in FAMILIES["compression"]]
+    assert "H.264 crf 38, keyframe every 250" in labels
+    vf = Coded(38, 250)
+    src = video("TUD-Campus")
+    w, h, _, frames = open_y4m(src)
+    decoded = []
+    for k in range(2):
+        pipeline = variant_stream("TUD-Campus", vf)
+        out = str(tmp_path / ("coded%d.y4m" % k))
+        with open(out, "wb") as f:
+            f.write(pipeline[-1].stdout.read())
+        pipeline[-1].stdout.close()
+        assert [p.wait() for p in pipeline] == [0, 0]
+        decoded.append(open_y4m(out))
+    cw, ch, _, coded = decoded[0]
+    assert (cw, ch) == (w, h) and len(coded) == len(frames) == 71
+    assert (coded == decoded[1][3]).all()
+    for i in (0, 35, 70):
+        a = i420_planes(frames[i], w, h)[0].astype(int)
+        b = i420_planes(coded[i], w, h)[0].astype(int)
+        assert 0.5 < abs(a - b).mean() < 8, i
+    s = run_variant(BUILD, "TUD-Campus", vf, None, str(tmp_path / "tracks.txt"))
+    assert s["MOTA"] > 0 and s["IDF1"] > 20, s
