@@ -41,6 +41,9 @@ class Coded:
     def __init__(self, crf, gop):
         self.crf, self.gop = crf, gop
 
+    def __str__(self):
+        return "H.264 crf %d, keyframe every %d" % (self.crf, self.gop)
+
     def encoder(self):
         """ffmpeg's output options for the encoding."""
         return ["-c:v", "libx264", "-threads", "1", "-preset", "veryfast",
@@ -89,7 +92,7 @@ FAMILIES = {
     # keyframe every 25 frames (a second at 25 frames/s, as such cameras
     # send them) and every 250 (x264's default): blocks, smoothed texture
     # and colour, and no sensor noise left.
-    "compression": [("H.264 crf %d, keyframe every %d" % (crf, gop), Coded(crf, gop), None)
+    "compression": [(str(Coded(crf, gop)), Coded(crf, gop), None)
                     for crf in (23, 28, 33, 38) for gop in (25, 250)],
 }
 
@@ -172,8 +175,7 @@ def run_variant(build, seq, vf, move, out, env=None, detections=False, params=()
         pipeline[-1].stdout.close()
         status = [p.wait() for p in pipeline]
     if any(status):
-        raise RuntimeError("ffmpeg failed on %s (%s)" % (
-            seq, "crf %d, gop %d" % (vf.crf, vf.gop) if isinstance(vf, Coded) else vf))
+        raise RuntimeError("ffmpeg failed on %s (%s)" % (seq, vf))
     return score(gt, out)
 
 
