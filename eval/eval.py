@@ -664,13 +664,17 @@ eight offsets, the same picture with each pixel in another place of the
 working scale's blocks (its spread is the tracker's luck, not the
 camera's); and the stream a network camera sends, H.264 (x264) from its
 default quality (a constant rate factor of 23) to a low bitrate's (38),
-with a keyframe every 25 and every 250 frames. Each cell is the mean over
-the family's variants (how many in brackets) and, in brackets, the lowest
-MOTA / IDF1 among them. The background model's constants for noise,
-contrast and black level, and the size model's, were chosen on these
-means (docs/tuning.md) but for compression's, which came after them and
-on which no default was chosen. The primed column is a look-ahead beside
-the online one; TUD-Campus's variants are primed on their whole clip.
+with a keyframe every 25 and every 250 frames; and a moving person's
+trail, as a camera's temporal noise filter or a slow shutter leaves it:
+each frame blended with the frame before at a quarter, a third and a half
+of the picture, and with the two before at a seventh and two sevenths.
+Each cell is the mean over the family's variants (how many in brackets)
+and, in brackets, the lowest MOTA / IDF1 among them. The background
+model's constants for noise, contrast and black level, and the size
+model's, were chosen on these means (docs/tuning.md) but for compression's
+and ghosting's, which came after them and on which no default was chosen.
+The primed column is a look-ahead beside the online one; TUD-Campus's
+variants are primed on their whole clip.
 
 """
 

@@ -94,6 +94,16 @@ FAMILIES = {
     # and colour, and no sensor noise left.
     "compression": [(str(Coded(crf, gop)), Coded(crf, gop), None)
                     for crf in (23, 28, 33, 38) for gop in (25, 250)],
+    # A moving person's trail: each frame blended with the ones before it,
+    # as a camera's temporal noise filter leaves it in dim light, or a slow
+    # shutter smears it. The frame before at a quarter, a third and a half
+    # of the picture, and the two before at a seventh and two sevenths (a
+    # fading trail). tmix takes the oldest frame's weight first; the first
+    # frame is left as it is.
+    "ghosting": [("the frame%s before at %s" % (s, share),
+                  "tmix=frames=%d:weights=%s" % (len(w.split()), w), None)
+                 for s, share, w in (("", "1/4", "1 3"), ("", "1/3", "1 2"), ("", "1/2", "1 1"),
+                                     ("s", "1/7 and 2/7", "1 2 4"))],
 }
 
 

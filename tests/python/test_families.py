@@ -3,6 +3,7 @@ ground truth and detections are moved as its ffmpeg filter moves the
 frames, so a variant scores as the frames as they are do."""
 import os
 import subprocess
+from fractions import Fraction
 
 import pytest
 
@@ -142,4 +143,42 @@ def test_a_coded_variant_is_the_clip_through_a_camera_s_encoder(tmp_path):
         b = i420_planes(coded[i], w, h)[0].astype(int)
         assert 0.5 < abs(a - b).mean() < 8, i
     s = run_variant(BUILD, "TUD-Campus", vf, None, str(tmp_path / "tracks.txt"))
+    assert s["MOTA"] > 0 and s["IDF1"] > 20, s
+
+
+def test_a_ghosting_variant_blends_each_frame_with_the_ones_before(tmp_path):
+    # Each variant's frame k is its weights' blend of the clip's frames k-n+1
+    # .. k, the oldest's weight first: the frame before at a quarter is
+    # 1/4 of frame k-1 and 3/4 of frame k (not the other way round, which
+    # would be a ghost ahead of the person), within ffmpeg's rounding. The
+    # first frame is the clip's own.
+    src = video("TUD-Campus")
+    w, h, _, frames = open_y4m(src)
+    luma = [i420_planes(f, w, h)[0].astype(float) for f in frames[:4]]
+    for label, vf, move in FAMILIES["ghosting"]:
+        assert move is None
+        weights = [float(x) for x in vf.split("weights=")[1].split()]
+        # The label's shares are the frames before's, oldest first.
+        shares = [Fraction(x) for x in label.split(" at ")[1].split(" and ")]
+        assert shares == [Fraction(int(wt), int(sum(weights))) for wt in weights[:-1]], label
+        pipeline = variant_stream("TUD-Campus", vf)
+        out = str(tmp_path / "ghost.y4m")
+        with open(out, "wb") as f:
+            f.write(pipeline[-1].stdout.read())
+        pipeline[-1].stdout.close()
+        assert [p.wait() for p in pipeline] == [0]
+        gw, gh, _, ghost = open_y4m(out)
+        assert (gw, gh) == (w, h) and len(ghost) == len(frames), label
+        first = i420_planes(ghost[0], w, h)[0].astype(float)
+        assert abs(first - luma[0]).mean() < 0.5, label
+        k = 3
+        got = i420_planes(ghost[k], w, h)[0].astype(float)
+        n = len(weights)
+        blend = sum(wt * luma[k - n + 1 + i] for i, wt in enumerate(weights)) / sum(weights)
+        backward = sum(wt * luma[k - i] for i, wt in enumerate(weights)) / sum(weights)
+        assert abs(got - blend).mean() < 0.75, label
+        if weights != weights[::-1]:
+            assert abs(got - backward).mean() > 2 * abs(got - blend).mean() + 0.5, label
+    s = run_variant(BUILD, "TUD-Campus", FAMILIES["ghosting"][0][1], None,
+                    str(tmp_path / "tracks.txt"))
     assert s["MOTA"] > 0 and s["IDF1"] > 20, s
