@@ -24,6 +24,17 @@ def first_luma(y4m):
     return i420_planes(frames[0], w, h)[0]
 
 
+def stream_to(seq, vf, out):
+    """The variant's frames (variant_stream()) written to the Y4M file out;
+    every ffmpeg process of it must succeed."""
+    pipeline = variant_stream(seq, vf)
+    with open(out, "wb") as f:
+        f.write(pipeline[-1].stdout.read())
+    pipeline[-1].stdout.close()
+    assert [p.wait() for p in pipeline] == [0] * len(pipeline)
+    return out
+
+
 def test_boxes_move_with_the_frames(tmp_path):
     # TUD-Campus is 640 x 480: a box at (100, 50), 40 x 120, at half size
     # and mirrored is at ((640 - 100 - 40) / 2, 25), 20 x 60.
@@ -128,13 +139,7 @@ def test_a_coded_variant_is_the_clip_through_a_camera_s_encoder(tmp_path):
     w, h, _, frames = open_y4m(src)
     decoded = []
     for k in range(2):
-        pipeline = variant_stream("TUD-Campus", vf)
-        out = str(tmp_path / ("coded%d.y4m" % k))
-        with open(out, "wb") as f:
-            f.write(pipeline[-1].stdout.read())
-        pipeline[-1].stdout.close()
-        assert [p.wait() for p in pipeline] == [0, 0]
-        decoded.append(open_y4m(out))
+        decoded.append(open_y4m(stream_to("TUD-Campus", vf, str(tmp_path / ("coded%d.y4m" % k)))))
     cw, ch, _, coded = decoded[0]
     assert (cw, ch) == (w, h) and len(coded) == len(frames) == 71
     assert (coded == decoded[1][3]).all()
@@ -161,13 +166,7 @@ def test_a_ghosting_variant_blends_each_frame_with_the_ones_before(tmp_path):
         # The label's shares are the frames before's, oldest first.
         shares = [Fraction(x) for x in label.split(" at ")[1].split(" and ")]
         assert shares == [Fraction(int(wt), int(sum(weights))) for wt in weights[:-1]], label
-        pipeline = variant_stream("TUD-Campus", vf)
-        out = str(tmp_path / "ghost.y4m")
-        with open(out, "wb") as f:
-            f.write(pipeline[-1].stdout.read())
-        pipeline[-1].stdout.close()
-        assert [p.wait() for p in pipeline] == [0]
-        gw, gh, _, ghost = open_y4m(out)
+        gw, gh, _, ghost = open_y4m(stream_to("TUD-Campus", vf, str(tmp_path / "ghost.y4m")))
         assert (gw, gh) == (w, h) and len(ghost) == len(frames), label
         first = i420_planes(ghost[0], w, h)[0].astype(float)
         assert abs(first - luma[0]).mean() < 0.5, label
