@@ -100,10 +100,11 @@ FAMILIES = {
     # of the picture, and the two before at a seventh and two sevenths (a
     # fading trail). tmix takes the oldest frame's weight first; the first
     # frame is left as it is.
-    "ghosting": [("the frame%s before at %s" % (s, share),
-                  "tmix=frames=%d:weights=%s" % (len(w.split()), w), None)
-                 for s, share, w in (("", "1/4", "1 3"), ("", "1/3", "1 2"), ("", "1/2", "1 1"),
-                                     ("s", "1/7 and 2/7", "1 2 4"))],
+    "ghosting": [(label, "tmix=frames=%d:weights=%s" % (len(w.split()), w), None)
+                 for label, w in (("the frame before at 1/4", "1 3"),
+                                  ("the frame before at 1/3", "1 2"),
+                                  ("the frame before at 1/2", "1 1"),
+                                  ("the frames before at 1/7 and 2/7", "1 2 4"))],
 }
 
 
