@@ -672,7 +672,8 @@ Each cell is the mean over the family's variants (how many in brackets)
 and, in brackets, the lowest MOTA / IDF1 among them. The background
 model's constants for noise, contrast and black level, and the size
 model's, were chosen on these means (docs/tuning.md) but for compression's
-and ghosting's, which came after them and on which no default was chosen.
+and ghosting's, which came after them and on which no default was chosen
+but the trail's own (docs/tuning.md, "A walker's trail").
 The primed column is a look-ahead beside the online one; TUD-Campus's
 variants are primed on their whole clip.
 

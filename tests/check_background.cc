@@ -528,6 +528,60 @@ START_TEST(sensor_noise_is_averaged_away)
 }
 END_TEST
 
+// A walker's trail (trail.h): each frame blended with the one before at a
+// third, as a camera's temporal noise filter leaves it. The model learns
+// the weight, and the square's trail (where it stood the frame before) is
+// background while the square is foreground; the same square without the
+// blend shows no weight, nor does the blended square drawn flat (its
+// edges' pixels, part square and part background, are all that changes).
+START_TEST(a_trail_is_learnt_and_left_out)
+{
+    for (int kind = 0; kind < 3; kind++) {
+        const bool blend = kind >= 1, flat = kind == 2;
+        Background bg;
+        bg.keep_luma(true);
+        Gray g, last;
+        double weight = 0, most = 0;
+        int trail = 0, body = 0;
+        for (int k = 0; k < 45; k++) {
+            // The square walks in once the model has learnt the scene.
+            const int x = 10 + 4 * (k - 15);
+            g.fill(100);
+            // A person's own pixels change a little from frame to frame
+            // (texture, the sensor's noise): 196 to 204.
+            if (k >= 15)
+                for (int r = 40; r < 60; r++)
+                    for (int c = x; c < x + 20; c++)
+                        g.y[r * W + c] =
+                            (uint8_t)(flat ? 200 : 196 + (r * 3 + c * 5 + k * 7) % 9);
+            Gray f = g;
+            if (blend && k > 0)
+                for (size_t i = 0; i < f.y.size(); i++)
+                    f.y[i] = (uint8_t)((2 * g.y[i] + last.y[i] + 1) / 3);
+            last = g;
+            bg.apply(at(k), f.planes(), Background::kStartScale, nullptr, 0);
+            bg.commit();
+            weight = bg.trail_weight();
+            most = std::max(most, weight);
+            if (k == 44) {
+                trail = foreground_in(bg, x - 4, 40, x, 60);
+                body = foreground_in(bg, x, 40, x + 20, 60);
+            }
+        }
+        const int cells = (20 / Background::kStartScale) * (20 / Background::kStartScale);
+        ck_assert_int_ge(body, cells * 9 / 10);
+        if (blend && !flat) {
+            ck_assert_msg(std::fabs(weight - 1.0 / 3) <= 0.06, "weight %.3f", weight);
+            ck_assert_int_eq(trail, 0);
+        } else {
+            ck_assert_msg(most == 0, "kind %d: weight %.3f", kind, most);
+            if (blend)
+                ck_assert_int_gt(trail, 0);
+        }
+    }
+}
+END_TEST
+
 // A slow lighting ramp (a level every 4 frames) is absorbed: no foreground.
 START_TEST(slow_lighting_ramp_is_absorbed)
 {
@@ -1459,6 +1513,7 @@ int main(int argc, char **argv)
     tcase_add_test(tc, the_floor_follows_the_contrast);
     tcase_add_test(tc, ghosts_have_their_edges_in_the_model);
     tcase_add_test(tc, stopped_person_under_a_track_is_not_absorbed);
+    tcase_add_test(tc, a_trail_is_learnt_and_left_out);
     tcase_add_test(tc, slow_lighting_ramp_is_absorbed);
     tcase_add_test(tc, no_lasting_ghost_from_the_first_frame);
     tcase_add_test(tc, live_tells_a_stirring_blob_from_a_still_one);

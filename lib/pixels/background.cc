@@ -106,6 +106,9 @@ CT_TUNABLE(kLiveFraction, "CTRACK_LIVE_FRACTION", 0.05);
 // frame"). Counted in frames, the same sway would be alive at 10 frames/s
 // and not at 25.
 CT_TUNABLE(kLiveSpanS, "CTRACK_LIVE_SPAN", 0.3);
+// A walker's trail (trail.h) is read and left out (0: neither; for the
+// sweeps of docs/tuning.md, "A walker's trail").
+CT_TUNABLE(kTrailOn, "CTRACK_TRAIL_ON", 1);
 
 } // namespace
 
@@ -258,6 +261,7 @@ void Background::rollback()
     start_us_ = old_dims_.start_us;
     last_us_ = old_dims_.last_us;
     noise_ = old_dims_.noise;
+    trail_ = old_dims_.trail;
     mean_2x2_ = old_dims_.mean_2x2;
     set_gain(old_dims_.gain);
     camera_moved_ = old_dims_.camera_moved;
@@ -297,6 +301,7 @@ void Background::start(const Planes &img)
     mv_.assign(mv_.size(), 128);
     frames_ = 0;
     noise_ = NoiseLevel();
+    trail_.reset();
 }
 
 void Background::resample(const Planes &img)
@@ -365,7 +370,8 @@ Background::Update Background::prepare(const Planes &img, int scale, const Rect 
     // The model so far moves to the old buffers, kept for rollback(); the
     // update reads it there and writes the new one in place of the current.
     old_dims_ = Dims{w_,        h_,       fw_,    fh_,   scale_,         color_,   frames_,
-                     start_us_, last_us_, noise_, gain_, camera_moved_, moved_us_, mean_2x2_};
+                     start_us_, last_us_, noise_, gain_, camera_moved_, moved_us_, mean_2x2_,
+                     trail_};
     swap_models();
     kept_ = true;
     scale = std::min(std::max(scale, finest_), kMaxScale);
@@ -477,6 +483,9 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
     rows_.assign(h, 0);
     if (keep_luma_)
         luma_.resize((size_t)w * h);
+    // A trail is read against the frame before, at the same size and scale.
+    const bool trail = kTrailOn > 0 && keep_luma_ && !u.restart && !u.rescale &&
+                       old_luma_.size() == (size_t)w * h;
     for (int y = 0; y < h; y++) {
         const uint8_t *iu, *iv;
         dsp_.bg_gather_row(gather(img, y, &iu, &iv));
@@ -516,10 +525,51 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
         r.w = w;
         r.color = color;
         dsp_.bg_update_row(r);
+        // The trail's weight is read on every 4th row (as the noise is),
+        // and left out of every row once it is known.
+        const bool trail_row = y % 4 == 0;
+        if (trail && (trail_row || trail_.known()))
+            leave_trail(r, row, trail_row);
         if (noise_row) {
             noise_samples_.sample(line_dy_.data(), color ? line_dc_.data() : nullptr, frozen_y,
                                   w);
             noise_samples_.levels(r.my, w);
+        }
+    }
+}
+
+void Background::leave_trail(const BgRow &r, size_t row, bool sample)
+{
+    // Where the frame before was foreground and this frame's luma differs
+    // from the background on the same side, the ratio of the two
+    // differences is sampled, and a trail's is background.
+    const uint8_t *last = old_luma_.data() + row;
+    const uint8_t *iy = r.iy, *my = r.my, *vy = r.vy;
+    uint8_t *mask = r.mask;
+    const int w = r.w;
+    for (int x = 0; x < w;) {
+        // Most of a mask is background: 16 of its bytes are skipped at once.
+        uint64_t a, b;
+        if (x + 16 <= w) {
+            std::memcpy(&a, mask + x, 8);
+            std::memcpy(&b, mask + x + 8, 8);
+            if ((a | b) == 0) {
+                x += 16;
+                continue;
+            }
+        }
+        const int end = std::min(w, x + 16);
+        for (; x < end; x++) {
+            if (!mask[x])
+                continue;
+            const int d = iy[x] - my[x], before = last[x] - my[x];
+            const int now = std::abs(d), then = std::abs(before);
+            if (d * before <= 0 || then <= vy[x] || now >= then)
+                continue;
+            if (sample)
+                trail_.sample(now, then);
+            if (trail_.trail(now, then))
+                mask[x] = 0;
         }
     }
 }
@@ -543,7 +593,9 @@ void Background::apply(int64_t t_us, const Planes &img, int scale, const Rect *f
     const bool sample = !u.restart;
     if (sample)
         noise_samples_.begin();
+    trail_.begin();
     update_rows(img, frozen, n_frozen, r, u, sample);
+    trail_.end(u.restart ? 0 : elapsed_s(t_us, old_dims_.last_us));
     have_last_ = keep_luma_ && !u.restart && !u.rescale && old_luma_.size() == luma_.size();
     have_ref_ = have_last_ && ref_matches();
     live_level_ = r.vmin;

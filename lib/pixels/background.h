@@ -1,7 +1,8 @@
 // The background model for tracking from the pixels alone: Sigma-Delta
 // estimation (Manzanera and Richefeu 2004) in integers on the frame at a
 // working scale (half resolution, or full or a quarter for small or large
-// people), with selective update and chroma shadow suppression.
+// people), with selective update, chroma shadow suppression and, from the
+// pixels alone, a walker's trail left out (trail.h).
 #ifndef CTRACK_BACKGROUND_H
 #define CTRACK_BACKGROUND_H
 
@@ -14,6 +15,7 @@
 #include "dsp/dsp.h"
 #include "pixels/mask.h"
 #include "pixels/noise.h"
+#include "pixels/trail.h"
 #include "base/planes.h"
 
 namespace ctrack {
@@ -100,6 +102,13 @@ public:
     // Whether the frames' luma is kept for live() (from the next apply();
     // off, its buffers are freed).
     void keep_luma(bool on);
+    // The weight of the frame before in this one, where the frames show
+    // a walker's trail (a camera's temporal noise filter: trail.h); 0
+    // where they show none. While it is known, a pixel whose luma's
+    // difference from the background fell to about that share of the
+    // frame before's, on the same side, is background in the mask. Read
+    // from the frames while keep_luma() is on.
+    double trail_weight() const { return trail_.weight(); }
     // Whether the last frame's working pixels were 2 x 2 means of the
     // frame's (under sensor noise), not one pixel of their block.
     bool averages() const { return mean_2x2_; }
@@ -143,6 +152,9 @@ private:
     // Reads the frame's luma divided by gain from now on (gain_lut_).
     void set_gain(double gain);
     void swap_models();
+    // Row r's trail (trail.h), sampled when `sample` and, where the weight
+    // is known, left out of its mask (row: its first pixel's index).
+    void leave_trail(const BgRow &r, size_t row, bool sample);
     // motion() for this frame, or its buffer freed once the time is past.
     void find_motion(int64_t t_us);
     // The noise within the frame (NoiseLevel::fine): the median absolute
@@ -156,6 +168,7 @@ private:
     bool color_ = false;
     int frames_ = 0;
     NoiseLevel noise_;
+    TrailWeight trail_;
     NoiseSamples noise_samples_;
     // Whether this frame's working pixels are 2 x 2 means (kMeanNoise).
     bool mean_2x2_ = false;
@@ -180,6 +193,7 @@ private:
         bool camera_moved;
         int64_t moved_us;
         bool mean_2x2;
+        TrailWeight trail;
     } old_dims_{};
     Vec<uint8_t> old_my_, old_vy_, old_mu_, old_mv_;
     // This frame's luma and the last one's, at the working scale (swapped
