@@ -10,6 +10,7 @@
 #include "dsp/cpu.h"
 #include "pixels/camera_motion.h"
 #include "pixels/mask.h"
+#include "pixels/regions.h"
 
 namespace ctrack {
 
@@ -540,37 +541,23 @@ void Background::update_rows(const Planes &img, const Rect *frozen, int n_frozen
 
 void Background::leave_trail(const BgRow &r, size_t row, bool sample)
 {
-    // Where the frame before was foreground and this frame's luma differs
-    // from the background on the same side, the ratio of the two
-    // differences is sampled, and a trail's is background.
+    // Where the frame before's luma differed from the background by more
+    // than V and this frame's differs on the same side, by less, the ratio
+    // of the two differences is sampled, and a trail's is background.
     const uint8_t *last = old_luma_.data() + row;
     const uint8_t *iy = r.iy, *my = r.my, *vy = r.vy;
     uint8_t *mask = r.mask;
     const int w = r.w;
-    for (int x = 0; x < w;) {
-        // Most of a mask is background: 16 of its bytes are skipped at once.
-        uint64_t a, b;
-        if (x + 16 <= w) {
-            std::memcpy(&a, mask + x, 8);
-            std::memcpy(&b, mask + x + 8, 8);
-            if ((a | b) == 0) {
-                x += 16;
-                continue;
-            }
-        }
-        const int end = std::min(w, x + 16);
-        for (; x < end; x++) {
-            if (!mask[x])
-                continue;
-            const int d = iy[x] - my[x], before = last[x] - my[x];
-            const int now = std::abs(d), then = std::abs(before);
-            if (d * before <= 0 || then <= vy[x] || now >= then)
-                continue;
-            if (sample)
-                trail_.sample(now, then);
-            if (trail_.trail(now, then))
-                mask[x] = 0;
-        }
+    // Most of a mask is background, skipped eight bytes at a time.
+    for (int x = first_nonzero(mask, 0, w); x < w; x = first_nonzero(mask, x + 1, w)) {
+        const int d = iy[x] - my[x], before = last[x] - my[x];
+        const int now = std::abs(d), then = std::abs(before);
+        if (d * before <= 0 || then <= vy[x] || now >= then)
+            continue;
+        if (sample)
+            trail_.sample(now, then);
+        if (trail_.trail(now, then))
+            mask[x] = 0;
     }
 }
 
